@@ -1,0 +1,27 @@
+#pragma once
+// The proxygi CLI: one file per subcommand, each registering itself on the root app. A command's
+// callback stores the work to run in `runner`; main() runs it after parsing and returns its exit
+// code. Exit codes: 0 success, 1 runtime failure, 2 usage error or bad input.
+#include <functional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+namespace proxygi::app {
+
+using CommandRunner = std::function<int()>;
+
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitFailure = 1;
+inline constexpr int kExitBadInput = 2;
+
+// Prints "proxygi: <message>" on stderr and returns kExitBadInput / kExitFailure.
+int fail_bad_input(const std::string& message);
+int fail_runtime(const std::string& message);
+
+// Adds --device NAME|INDEX to a subcommand (falls back to $PROXYGI_DEVICE when not given).
+void add_device_option(CLI::App& command, std::string& device);
+
+void add_devices_command(CLI::App& app, CommandRunner& runner);
+
+}  // namespace proxygi::app

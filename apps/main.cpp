@@ -1,0 +1,55 @@
+// proxygi: parse the command line, run one subcommand, return its exit code.
+#include <cstdio>
+#include <cstdlib>
+
+#include "apps/commands.h"
+
+#ifndef PROXYGI_VERSION
+#define PROXYGI_VERSION "unknown"
+#endif
+
+namespace proxygi::app {
+
+int fail_bad_input(const std::string& message) {
+  std::fprintf(stderr, "proxygi: %s\n", message.c_str());
+  return kExitBadInput;
+}
+
+int fail_runtime(const std::string& message) {
+  std::fprintf(stderr, "proxygi: %s\n", message.c_str());
+  return kExitFailure;
+}
+
+void add_device_option(CLI::App& command, std::string& device) {
+  command.add_option("--device", device,
+                     "Vulkan device by name substring or index (default: $PROXYGI_DEVICE, else the "
+                     "first discrete GPU, integrated GPU, then lavapipe)");
+}
+
+}  // namespace proxygi::app
+
+int main(int argc, char** argv) {
+  using namespace proxygi::app;
+  CLI::App app{"proxygi: soft shadows and bounce light from sphere proxies of animated glTF characters"};
+  app.name("proxygi");
+  app.set_version_flag("--version", std::string("proxygi ") + PROXYGI_VERSION);
+  app.require_subcommand(1);
+
+  CommandRunner runner;
+  add_devices_command(app, runner);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& help) {
+    return app.exit(help);
+  } catch (const CLI::CallForAllHelp& help) {
+    return app.exit(help);
+  } catch (const CLI::Success& success) {  // --version
+    return app.exit(success);
+  } catch (const CLI::ParseError& error) {
+    std::fprintf(stderr, "proxygi: %s\n\n%s", error.what(), app.help().c_str());
+    return kExitBadInput;
+  }
+  if (!runner) return fail_bad_input("no command to run");
+  return runner();
+}
