@@ -22,6 +22,15 @@ int fail_runtime(const std::string& message);
 // Adds --device NAME|INDEX to a subcommand (falls back to $PROXYGI_DEVICE when not given).
 void add_device_option(CLI::App& command, std::string& device);
 
-void add_devices_command(CLI::App& app, CommandRunner& runner);
+// Top-level commands, one file each (apps/cmd_<name>.cpp).
+void add_devices_command(CLI::App& app, CommandRunner& runner);  // cmd_devices.cpp
+void add_info_command(CLI::App& app, CommandRunner& runner);     // cmd_info.cpp
+void add_pose_command(CLI::App& app, CommandRunner& runner);     // cmd_pose.cpp
+void add_fit_command(CLI::App& app, CommandRunner& runner);      // cmd_fit.cpp
+void add_compare_command(CLI::App& app, CommandRunner& runner);  // cmd_compare.cpp
+void add_bench_command(CLI::App& app, CommandRunner& runner);    // cmd_bench.cpp
+
+// `proxygi bench <study>` subcommands, one file each (apps/bench_<name>.cpp).
+void add_bench_sh_command(CLI::App& bench, CommandRunner& runner);  // bench_sh.cpp
 
 }  // namespace proxygi::app

@@ -37,6 +37,11 @@ int main(int argc, char** argv) {
 
   CommandRunner runner;
   add_devices_command(app, runner);
+  add_info_command(app, runner);
+  add_pose_command(app, runner);
+  add_fit_command(app, runner);
+  add_compare_command(app, runner);
+  add_bench_command(app, runner);
 
   try {
     app.parse(argc, argv);
