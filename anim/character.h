@@ -32,6 +32,7 @@ struct Node {
   std::optional<glm::mat4> matrix;  // glTF "matrix" nodes: fixed, never animated
   int mesh = -1;               // index into Character::meshes, -1 if none
   int skin = -1;               // index into Character::skins, -1 if none
+  std::vector<float> morph_weights;  // glTF node.weights (overrides mesh weights); empty if absent
 };
 
 // RGBA8 image in row-major order, top row first, sRGB-encoded as stored in the file.
