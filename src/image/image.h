@@ -24,14 +24,23 @@ struct ImageF {
 
 // Reads .hdr (Radiance RGBE), .exr (OpenEXR, RGB(A) float/half) and .png (sRGB -> linear).
 // Refuses images larger than max_pixels. Errors name the file.
+// - The format is chosen by the file's magic bytes, not its extension.
+// - .hdr: linear RGB, alpha 1.
+// - .png: 8- or 16-bit, gray/RGB with or without alpha; color decoded from sRGB to linear,
+//   alpha is coverage (code / max, not sRGB-decoded); missing alpha is 1.
+// - .exr: single-part scanline files, any compression tinyexr knows; channels R, G, B (or Y for
+//   gray) and optional A, each half, float or uint (converted to float); missing alpha is 1.
+//   Tiled, multi-part and deep files are refused.
 Result<ImageF> read_image(const std::filesystem::path& path, std::size_t max_pixels = std::size_t(1) << 26);
 
-// 8-bit sRGB PNG of linear values (clamped to [0, 1], alpha written as is).
+// 8-bit sRGB RGBA PNG of linear values (clamped to [0, 1], NaN -> 0, rounded to the nearest
+// code; alpha clamped and written without sRGB encoding). Deterministic bytes.
 Status write_png(const std::filesystem::path& path, const ImageF& image);
-// Linear float OpenEXR (RGBA, 32-bit float channels).
+// Linear float OpenEXR (RGBA, 32-bit float channels, ZIP compression: lossless, bit-exact).
 Status write_exr(const std::filesystem::path& path, const ImageF& image);
 
-// sRGB transfer functions (IEC 61966-2-1).
+// sRGB transfer functions (IEC 61966-2-1), for values in [0, 1] (outside: the same formulas,
+// extended; the caller clamps where it must).
 float srgb_to_linear(float encoded);
 float linear_to_srgb(float linear);
 
