@@ -2,7 +2,9 @@
 add_library(proxygi_warnings INTERFACE)
 target_compile_options(proxygi_warnings INTERFACE
   -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor -Wcast-align -Woverloaded-virtual
-  -Wimplicit-fallthrough)
+  -Wimplicit-fallthrough
+  # Vulkan structs are written VkX x{VK_STRUCTURE_TYPE_X}: the rest is value-initialized on purpose.
+  -Wno-missing-field-initializers)
 if(PROXYGI_WERROR)
   target_compile_options(proxygi_warnings INTERFACE -Werror)
 endif()

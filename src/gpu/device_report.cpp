@@ -57,6 +57,7 @@ std::vector<std::string> missing_requirements(const DeviceReport& device) {
   if (!device.graphics_compute_queue) missing.push_back("no queue family with graphics and compute");
   if (!device.dynamic_rendering) missing.push_back("no dynamic rendering");
   if (!device.synchronization2) missing.push_back("no synchronization2");
+  if (!device.push_descriptor) missing.push_back("no VK_KHR_push_descriptor");
   if (!device.rgba16f_attachment) missing.push_back("RGBA16F is not a color attachment format");
   if (!device.float32_blend) missing.push_back("no blending on RGBA32F attachments");
   return missing;

@@ -22,6 +22,7 @@ struct DeviceReport {
   bool graphics_compute_queue = false;   // one queue family with graphics and compute
   bool dynamic_rendering = false;        // Vulkan 1.3 core feature (or KHR extension)
   bool synchronization2 = false;
+  bool push_descriptor = false;          // VK_KHR_push_descriptor (passes bind without pools)
   bool float32_blend = false;            // RGBA32F color attachment supports blending
   bool rgba16f_attachment = false;
   std::uint64_t max_storage_buffer_range = 0;  // bytes

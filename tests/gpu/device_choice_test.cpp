@@ -12,6 +12,7 @@ DeviceReport usable_device(int index, std::string name, DeviceKind kind) {
   device.kind = kind;
   device.api_version = (1u << 22) | (3u << 12);
   device.graphics_compute_queue = device.dynamic_rendering = device.synchronization2 = true;
+  device.push_descriptor = true;
   device.float32_blend = device.rgba16f_attachment = true;
   return device;
 }

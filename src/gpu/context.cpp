@@ -1,0 +1,170 @@
+#include "gpu/context.h"
+
+#include <cstdlib>
+
+#include "base/log.h"
+#include "gpu/device_query.h"
+#include "gpu/vulkan_check.h"
+
+namespace proxygi::gpu {
+namespace {
+
+std::string requested_device(const ContextOptions& options) {
+  if (!options.device_request.empty()) return options.device_request;
+  if (const char* value = std::getenv("PROXYGI_DEVICE")) return value;
+  return {};
+}
+
+Result<std::vector<DeviceReport>> reports_of(const std::vector<VkPhysicalDevice>& devices) {
+  std::vector<DeviceReport> reports;
+  for (std::size_t i = 0; i < devices.size(); ++i) reports.push_back(query_device(devices[i], static_cast<int>(i)));
+  return reports;
+}
+
+}  // namespace
+
+Result<std::vector<DeviceReport>> list_devices() {
+  auto instance = Instance::create(false);
+  if (!instance) return instance.error();
+  auto devices = physical_devices((*instance)->handle());
+  if (!devices) return devices.error();
+  return reports_of(*devices);
+}
+
+Result<std::unique_ptr<Context>> Context::create(const ContextOptions& options) {
+  std::unique_ptr<Context> context(new Context());
+  auto instance = Instance::create(resolve_validation(options.validation));
+  if (!instance) return instance.error();
+  context->instance_ = std::move(*instance);
+
+  auto devices = physical_devices(context->instance());
+  if (!devices) return devices.error();
+  auto reports = reports_of(*devices);
+  if (!reports) return reports.error();
+  auto choice = choose_device(*reports, requested_device(options));
+  if (!choice) return choice.error();
+
+  const auto chosen = static_cast<std::size_t>(choice->index);
+  context->physical_device_ = (*devices)[chosen];
+  context->report_ = (*reports)[chosen];
+  log_info("vulkan: using " + context->report_.name + " (" + context->report_.driver + "; " + choice->reason + ")");
+  for (const auto& rejection : choice->rejections) log_info("vulkan: not using " + rejection);
+
+  VkPhysicalDeviceProperties properties{};
+  vkGetPhysicalDeviceProperties(context->physical_device_, &properties);
+  context->limits_ = properties.limits;
+  vkGetPhysicalDeviceMemoryProperties(context->physical_device_, &context->memory_properties_);
+
+  std::uint32_t family_count = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(context->physical_device_, &family_count, nullptr);
+  std::vector<VkQueueFamilyProperties> families(family_count);
+  vkGetPhysicalDeviceQueueFamilyProperties(context->physical_device_, &family_count, families.data());
+  for (std::uint32_t i = 0; i < family_count; ++i) {
+    if ((families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) && (families[i].queueFlags & VK_QUEUE_COMPUTE_BIT)) {
+      context->queue_family_ = i;
+      break;
+    }
+  }
+
+  const float priority = 1.0f;
+  VkDeviceQueueCreateInfo queue_info{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+  queue_info.queueFamilyIndex = context->queue_family_;
+  queue_info.queueCount = 1;
+  queue_info.pQueuePriorities = &priority;
+
+  VkPhysicalDeviceVulkan13Features features13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+  features13.dynamicRendering = VK_TRUE;
+  features13.synchronization2 = VK_TRUE;
+  VkPhysicalDeviceVulkan12Features features12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+  features12.pNext = &features13;
+  VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+  features.pNext = &features12;
+  const char* extensions[] = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
+
+  VkDeviceCreateInfo device_info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+  device_info.pNext = &features;
+  device_info.queueCreateInfoCount = 1;
+  device_info.pQueueCreateInfos = &queue_info;
+  device_info.enabledExtensionCount = 1;
+  device_info.ppEnabledExtensionNames = extensions;
+  PROXYGI_VK_TRY(vkCreateDevice(context->physical_device_, &device_info, nullptr, &context->device_));
+  vkGetDeviceQueue(context->device_, context->queue_family_, 0, &context->queue_);
+
+  VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  pool_info.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT | VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+  pool_info.queueFamilyIndex = context->queue_family_;
+  PROXYGI_VK_TRY(vkCreateCommandPool(context->device_, &pool_info, nullptr, &context->command_pool_));
+
+  context->push_descriptor_set = reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(
+      vkGetDeviceProcAddr(context->device_, "vkCmdPushDescriptorSetKHR"));
+  if (!context->push_descriptor_set) return make_error("vkCmdPushDescriptorSetKHR is not available");
+  if (context->validation_enabled()) {
+    context->begin_label_ = reinterpret_cast<PFN_vkCmdBeginDebugUtilsLabelEXT>(
+        vkGetInstanceProcAddr(context->instance(), "vkCmdBeginDebugUtilsLabelEXT"));
+    context->end_label_ = reinterpret_cast<PFN_vkCmdEndDebugUtilsLabelEXT>(
+        vkGetInstanceProcAddr(context->instance(), "vkCmdEndDebugUtilsLabelEXT"));
+  }
+  return context;
+}
+
+Context::~Context() {
+  if (device_ != VK_NULL_HANDLE) {
+    vkDeviceWaitIdle(device_);
+    if (command_pool_ != VK_NULL_HANDLE) vkDestroyCommandPool(device_, command_pool_, nullptr);
+    vkDestroyDevice(device_, nullptr);
+  }
+}
+
+Status Context::submit_and_wait(const std::function<void(VkCommandBuffer)>& record) {
+  VkCommandBufferAllocateInfo allocate{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  allocate.commandPool = command_pool_;
+  allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  allocate.commandBufferCount = 1;
+  VkCommandBuffer commands = VK_NULL_HANDLE;
+  PROXYGI_VK_TRY(vkAllocateCommandBuffers(device_, &allocate, &commands));
+  struct FreeOnExit {
+    VkDevice device;
+    VkCommandPool pool;
+    VkCommandBuffer commands;
+    VkFence fence = VK_NULL_HANDLE;
+    ~FreeOnExit() {
+      if (fence != VK_NULL_HANDLE) vkDestroyFence(device, fence, nullptr);
+      vkFreeCommandBuffers(device, pool, 1, &commands);
+    }
+  } cleanup{device_, command_pool_, commands};
+
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  PROXYGI_VK_TRY(vkBeginCommandBuffer(commands, &begin));
+  record(commands);
+  PROXYGI_VK_TRY(vkEndCommandBuffer(commands));
+
+  VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+  PROXYGI_VK_TRY(vkCreateFence(device_, &fence_info, nullptr, &cleanup.fence));
+  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &commands;
+  PROXYGI_VK_TRY(vkQueueSubmit(queue_, 1, &submit, cleanup.fence));
+  PROXYGI_VK_TRY(vkWaitForFences(device_, 1, &cleanup.fence, VK_TRUE, UINT64_MAX));
+  return {};
+}
+
+Result<std::uint32_t> Context::find_memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags required) const {
+  for (std::uint32_t i = 0; i < memory_properties_.memoryTypeCount; ++i)
+    if ((type_bits & (1u << i)) && (memory_properties_.memoryTypes[i].propertyFlags & required) == required) return i;
+  return make_error("no Vulkan memory type with flags " + std::to_string(required) + " for type bits " +
+                    std::to_string(type_bits));
+}
+
+void Context::begin_label(VkCommandBuffer commands, const char* name) const {
+  if (!begin_label_) return;
+  VkDebugUtilsLabelEXT label{VK_STRUCTURE_TYPE_DEBUG_UTILS_LABEL_EXT};
+  label.pLabelName = name;
+  begin_label_(commands, &label);
+}
+
+void Context::end_label(VkCommandBuffer commands) const {
+  if (end_label_) end_label_(commands);
+}
+
+}  // namespace proxygi::gpu

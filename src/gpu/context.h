@@ -1,0 +1,80 @@
+#pragma once
+// Context: a headless Vulkan device ready for proxygi's passes. It owns the instance (with the
+// validation layer when asked), the chosen physical device, one queue that does graphics,
+// compute and transfer, and a command pool for one-shot submissions.
+//
+//   auto context = gpu::Context::create({.device_request = "llvmpipe", .validation = Validation::on});
+//   if (!context) return context.error();
+//   (*context)->submit_and_wait([&](VkCommandBuffer commands) { ... });
+//
+// Device choice: ContextOptions::device_request, else $PROXYGI_DEVICE, else automatic
+// (discrete > integrated > virtual > CPU); the choice and every rejection are logged.
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "base/result.h"
+#include "gpu/device_report.h"
+#include "gpu/instance.h"
+
+namespace proxygi::gpu {
+
+struct ContextOptions {
+  std::string device_request;  // name substring or index; empty: $PROXYGI_DEVICE, then automatic
+  Validation validation = Validation::build_default;
+};
+
+class Context {
+ public:
+  static Result<std::unique_ptr<Context>> create(const ContextOptions& options);
+  ~Context();
+  Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
+
+  VkInstance instance() const { return instance_->handle(); }
+  VkPhysicalDevice physical_device() const { return physical_device_; }
+  VkDevice device() const { return device_; }
+  VkQueue queue() const { return queue_; }
+  std::uint32_t queue_family() const { return queue_family_; }
+  const DeviceReport& report() const { return report_; }
+  const VkPhysicalDeviceLimits& limits() const { return limits_; }
+
+  bool validation_enabled() const { return instance_->validation(); }
+  // Validation-layer warnings and errors seen so far (tests require zero).
+  std::size_t validation_message_count() const { return instance_->validation_log().count(); }
+  std::vector<std::string> validation_messages() const { return instance_->validation_log().messages(); }
+
+  // Records into a fresh primary command buffer, submits it, and waits for the fence.
+  Status submit_and_wait(const std::function<void(VkCommandBuffer)>& record);
+
+  // Index of a memory type allowed by type_bits with all `required` flags.
+  Result<std::uint32_t> find_memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags required) const;
+
+  // Debug labels (VK_EXT_debug_utils) when validation is on; no-ops otherwise.
+  void begin_label(VkCommandBuffer commands, const char* name) const;
+  void end_label(VkCommandBuffer commands) const;
+
+  PFN_vkCmdPushDescriptorSetKHR push_descriptor_set = nullptr;
+
+ private:
+  Context() = default;
+  std::unique_ptr<Instance> instance_;
+  VkPhysicalDevice physical_device_ = VK_NULL_HANDLE;
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkQueue queue_ = VK_NULL_HANDLE;
+  std::uint32_t queue_family_ = 0;
+  VkCommandPool command_pool_ = VK_NULL_HANDLE;
+  DeviceReport report_;
+  VkPhysicalDeviceLimits limits_{};
+  VkPhysicalDeviceMemoryProperties memory_properties_{};
+  PFN_vkCmdBeginDebugUtilsLabelEXT begin_label_ = nullptr;
+  PFN_vkCmdEndDebugUtilsLabelEXT end_label_ = nullptr;
+};
+
+// Every device of a fresh instance (for `proxygi devices`), without creating a VkDevice.
+Result<std::vector<DeviceReport>> list_devices();
+
+}  // namespace proxygi::gpu
