@@ -85,11 +85,13 @@ Result<ImageF> read_stb(const std::filesystem::path& path, const std::vector<std
   return image;
 }
 
-// Frees tinyexr's header, image and error string on every path out of read_exr.
+// Frees tinyexr's header, image and error string on every path out of read_exr. A failed header
+// parse may leave allocations behind (found by ASan), so the header is always freed (the free
+// function accepts a zero-initialized header); a failed image load cleans up after itself and
+// freeing it again would be a double free.
 struct ExrState {
   EXRHeader header;
   EXRImage image;
-  bool header_parsed = false;
   bool image_loaded = false;
   const char* error = nullptr;
   ExrState() {
@@ -98,7 +100,7 @@ struct ExrState {
   }
   ~ExrState() {
     if (image_loaded) FreeEXRImage(&image);
-    if (header_parsed) FreeEXRHeader(&header);
+    FreeEXRHeader(&header);
     if (error != nullptr) FreeEXRErrorMessage(error);
   }
   ExrState(const ExrState&) = delete;
@@ -125,7 +127,6 @@ Result<ImageF> read_exr(const std::filesystem::path& path, const std::vector<std
   ExrState exr;
   if (ParseEXRHeaderFromMemory(&exr.header, &version, bytes.data(), bytes.size(), &exr.error) != TINYEXR_SUCCESS)
     return file_error(path, "cannot parse OpenEXR header: " + exr.message("unknown error"));
-  exr.header_parsed = true;
   const EXRBox2i window = exr.header.data_window;
   const std::int64_t width = std::int64_t(window.max_x) - window.min_x + 1;
   const std::int64_t height = std::int64_t(window.max_y) - window.min_y + 1;
