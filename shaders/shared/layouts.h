@@ -28,8 +28,22 @@ struct TestPatternPush {
   uint padding;
 };
 
+// ---- skin.comp: linear blend skinning (mirrors anim/skinning.h SkinningJob) ----
+PROXYGI_CONST(uint, kSkinLocalSize, 64u);
+
+// Inputs per vertex: bind positions and normals as packed float triples, palette indices as
+// uint16 packed two per uint (low half first), weights as floats, `influences` of each per
+// vertex. Outputs: world-space vec4 positions (w = 1) and normals (w = 0).
+struct SkinPush {
+  uint vertex_count;
+  uint influences;
+  uint has_normals;          // 0: normals are not skinned (output left untouched)
+  uint use_normal_matrices;  // 0: mat3(skin matrix) as in the CPU fast path
+};
+
 #ifdef __cplusplus
 static_assert(sizeof(TestPatternPush) == 16);
+static_assert(sizeof(SkinPush) == 16);
 }  // namespace proxygi::gpu_layout
 #endif
 

@@ -1,0 +1,44 @@
+#version 460
+// Skin pass: linear blend skinning of one primitive, formula for formula the CPU reference
+// anim::SkinningJob (anim/skinning.h): M = sum_k w_k S[j_k], p' = M p, n' = normalize(N n).
+#extension GL_GOOGLE_include_directive : require
+#include "shared/layouts.h"
+
+layout(local_size_x = kSkinLocalSize) in;
+layout(push_constant) uniform Push { SkinPush push; };
+layout(std430, set = 0, binding = 0) readonly buffer Positions { float bind_positions[]; };
+layout(std430, set = 0, binding = 1) readonly buffer Normals { float bind_normals[]; };
+layout(std430, set = 0, binding = 2) readonly buffer Joints { uint packed_joints[]; };
+layout(std430, set = 0, binding = 3) readonly buffer Weights { float weights[]; };
+layout(std430, set = 0, binding = 4) readonly buffer SkinMatrices { mat4 skin_matrices[]; };
+layout(std430, set = 0, binding = 5) readonly buffer NormalMatrices { mat4 normal_matrices[]; };
+layout(std430, set = 0, binding = 6) writeonly buffer OutPositions { vec4 out_positions[]; };
+layout(std430, set = 0, binding = 7) writeonly buffer OutNormals { vec4 out_normals[]; };
+
+uint palette_index(uint flat_index) {
+  uint word = packed_joints[flat_index >> 1];
+  return (flat_index & 1u) == 0u ? (word & 0xFFFFu) : (word >> 16);
+}
+
+void main() {
+  uint vertex = gl_GlobalInvocationID.x;
+  if (vertex >= push.vertex_count) return;
+  mat4 blended = mat4(0.0);
+  mat3 blended_normal = mat3(0.0);
+  for (uint k = 0u; k < push.influences; ++k) {
+    uint flat_index = vertex * push.influences + k;
+    uint joint = palette_index(flat_index);
+    float weight = weights[flat_index];
+    blended += weight * skin_matrices[joint];
+    if (push.use_normal_matrices != 0u) blended_normal += weight * mat3(normal_matrices[joint]);
+  }
+  vec3 position = vec3(bind_positions[3u * vertex], bind_positions[3u * vertex + 1u], bind_positions[3u * vertex + 2u]);
+  out_positions[vertex] = vec4((blended * vec4(position, 1.0)).xyz, 1.0);
+  if (push.has_normals != 0u) {
+    if (push.use_normal_matrices == 0u) blended_normal = mat3(blended);
+    vec3 normal = vec3(bind_normals[3u * vertex], bind_normals[3u * vertex + 1u], bind_normals[3u * vertex + 2u]);
+    vec3 skinned = blended_normal * normal;
+    float length_squared = dot(skinned, skinned);
+    out_normals[vertex] = vec4(length_squared > 0.0 ? skinned * inversesqrt(length_squared) : vec3(0.0), 0.0);
+  }
+}

@@ -1,0 +1,102 @@
+#include "gpu/skin_pass.h"
+
+#include <cstring>
+#include <vector>
+
+#include "gpu/context.h"
+#include "gpu/transfer.h"
+#include "shaders/shared/layouts.h"
+
+namespace proxygi::gpu {
+namespace {
+
+constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+
+template <class T>
+std::span<const std::uint8_t> bytes_of(const std::vector<T>& values) {
+  return {reinterpret_cast<const std::uint8_t*>(values.data()), values.size() * sizeof(T)};
+}
+
+}  // namespace
+
+Result<SkinPass> SkinPass::create(const Context& context) {
+  std::vector<Binding> bindings;
+  for (std::uint32_t binding = 0; binding < 8; ++binding)
+    bindings.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT});
+  auto pipeline = Pipeline::compute(context, "skin.comp", bindings, sizeof(gpu_layout::SkinPush));
+  if (!pipeline) return pipeline.error();
+  SkinPass pass;
+  pass.pipeline_ = std::move(*pipeline);
+  return pass;
+}
+
+Result<SkinnedPrimitive> SkinPass::upload(Context& context, const anim::Primitive& primitive) {
+  if (primitive.influences_per_vertex < 1) return make_error("skin pass: primitive has no skin influences");
+  if (primitive.positions.empty()) return make_error("skin pass: primitive has no vertices");
+  SkinnedPrimitive out;
+  out.vertex_count = static_cast<std::uint32_t>(primitive.positions.size());
+  out.influences = static_cast<std::uint32_t>(primitive.influences_per_vertex);
+  out.has_normals = primitive.normals.size() == primitive.positions.size();
+
+  std::vector<std::uint16_t> joints = primitive.joints;
+  if (joints.size() % 2) joints.push_back(0);  // whole uints
+  const std::vector<float> dummy_normal = {0.0f};
+
+  struct Upload {
+    Buffer* target;
+    std::span<const std::uint8_t> bytes;
+  };
+  const Upload uploads[] = {
+      {&out.bind_positions, bytes_of(primitive.positions)},
+      {&out.bind_normals, out.has_normals ? bytes_of(primitive.normals) : bytes_of(dummy_normal)},
+      {&out.joints, bytes_of(joints)},
+      {&out.weights, bytes_of(primitive.weights)},
+  };
+  for (const auto& item : uploads) {
+    auto buffer = create_buffer_with_data(context, item.bytes, kStorage);
+    if (!buffer) return buffer.error();
+    *item.target = std::move(*buffer);
+  }
+  const VkDeviceSize output_bytes = VkDeviceSize(out.vertex_count) * sizeof(float) * 4;
+  const VkBufferUsageFlags output_usage = kStorage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+  auto positions = Buffer::create(context, output_bytes, output_usage, MemoryKind::device_local);
+  if (!positions) return positions.error();
+  auto normals = Buffer::create(context, output_bytes, output_usage, MemoryKind::device_local);
+  if (!normals) return normals.error();
+  out.world_positions = std::move(*positions);
+  out.world_normals = std::move(*normals);
+  return out;
+}
+
+void SkinPass::record(const Context& context, VkCommandBuffer commands, const SkinnedPrimitive& primitive,
+                      const Buffer& skin_matrices, const Buffer* normal_matrices) const {
+  context.begin_label(commands, kName);
+  pipeline_.bind(commands);
+  DescriptorPush()
+      .storage_buffer(0, primitive.bind_positions)
+      .storage_buffer(1, primitive.bind_normals)
+      .storage_buffer(2, primitive.joints)
+      .storage_buffer(3, primitive.weights)
+      .storage_buffer(4, skin_matrices)
+      .storage_buffer(5, normal_matrices ? *normal_matrices : skin_matrices)
+      .storage_buffer(6, primitive.world_positions)
+      .storage_buffer(7, primitive.world_normals)
+      .push(context, commands, pipeline_);
+  const gpu_layout::SkinPush push{primitive.vertex_count, primitive.influences, primitive.has_normals ? 1u : 0u,
+                                  normal_matrices ? 1u : 0u};
+  pipeline_.push_constants(commands, &push, sizeof(push));
+  vkCmdDispatch(commands, group_count(primitive.vertex_count, gpu_layout::kSkinLocalSize), 1, 1);
+
+  VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+  barrier.srcStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+  barrier.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+  barrier.dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+  barrier.dstAccessMask = VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_TRANSFER_READ_BIT;
+  VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+  dependency.memoryBarrierCount = 1;
+  dependency.pMemoryBarriers = &barrier;
+  vkCmdPipelineBarrier2(commands, &dependency);
+  context.end_label(commands);
+}
+
+}  // namespace proxygi::gpu
