@@ -1,0 +1,269 @@
+#pragma once
+// Scene: what `proxygi record`, `view`, `regress`, `bench` and `reference` render, as plain
+// structs with defaults. Read from JSON by scene_parse.h (which validates every field), written
+// back by scene_write.h, built in code by scene_defaults.h.
+//
+// Conventions: glTF space (right-handed, +Y up, meters, seconds); angles in the file and in
+// these structs are degrees unless a name says radians; colors are linear RGB (never sRGB);
+// GLM matrices are column-major. Paths are kept as written in the file (relative to
+// Scene::base_dir, the scene file's folder) so a scene writes back unchanged; resolve them with
+// resolve_scene_path(). The model "builtin:mannequin" names the bundled assets/mannequin.glb,
+// which the renderer resolves (resolve_model_path below does it given the assets folder).
+//
+// Usage:
+//   Result<Scene> scene = load_scene("shots/walk.json");
+//   if (!scene) return scene.error();
+//   for (const Character& c : scene->characters) load(resolve_model_path(*scene, c.model, assets));
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+namespace proxygi::scene {
+
+// The only schema version this build reads and writes. Bump it on any incompatible change.
+inline constexpr int kSchemaVersion = 1;
+inline constexpr std::string_view kBuiltinMannequin = "builtin:mannequin";
+
+// Rotation in one of two forms, kept as written so files round-trip.
+//  - euler_degrees (x, y, z): rotate about +X first, then +Y, then +Z, all about the fixed world
+//    axes (extrinsic XYZ), i.e. R = Rz(z) * Ry(y) * Rx(x). Positive angles are counter-clockwise
+//    looking down the axis toward the origin (right-hand rule).
+//  - quaternion: glm::quat (w, x, y, z in the constructor; [x, y, z, w] in the file, as glTF).
+//    Validated to unit length within 1e-3; to_quat() renormalizes.
+struct Rotation {
+  enum class Form { euler_degrees, quaternion };
+  Form form = Form::euler_degrees;
+  glm::vec3 euler_degrees{0.0f};
+  glm::quat quaternion{1.0f, 0.0f, 0.0f, 0.0f};
+
+  glm::quat to_quat() const;
+  bool operator==(const Rotation&) const = default;
+};
+
+// Placement of a model in the world: to_matrix() = T * R * S (scale first), as glTF nodes.
+struct Transform {
+  glm::vec3 translation{0.0f};  // meters
+  Rotation rotation;
+  glm::vec3 scale{1.0f};        // per axis, each > 0; written as one number when uniform
+
+  glm::mat4 to_matrix() const;
+  bool operator==(const Transform&) const = default;
+};
+
+// Straight-line root motion for clips that animate in place. At scene time t the root travels
+// s = speed * t meters from `start` toward `end` (t < 0 is treated as 0); at the end it stops
+// (`none`), jumps back to start (`loop`) or walks back (`ping_pong`). The character turns about
+// +Y to face its direction of travel; glTF characters face +Z, so +Z is mapped onto the travel
+// direction projected on the ground plane. See character_motion.h.
+struct WalkPath {
+  enum class Repeat { none, loop, ping_pong };
+  glm::vec3 start{0.0f};  // meters, world space
+  glm::vec3 end{0.0f};    // meters, world space; must differ from start
+  float speed = 1.0f;     // meters per second, > 0
+  Repeat repeat = Repeat::none;
+  bool operator==(const WalkPath&) const = default;
+};
+
+// A clip is named (glTF animation name) or indexed (glTF animation index, >= 0).
+using ClipRef = std::variant<std::string, int>;
+
+struct Character {
+  std::string model;  // glTF/GLB path relative to the scene folder, or "builtin:mannequin"
+  ClipRef clip{std::in_place_type<int>, 0};
+  float speed = 1.0f;          // playback rate: clip seconds per scene second (finite)
+  float time_offset_s = 0.0f;  // clip time at scene time 0: clip_t = time_offset_s + speed * t
+  Transform transform;         // model space -> world (or -> path frame when `path` is set)
+  // Proxy rig (*.proxies.json) relative to the scene folder; when absent the rig is cached
+  // next to the model (default_proxy_path).
+  std::optional<std::string> proxies;
+  std::optional<WalkPath> path;
+  bool operator==(const Character&) const = default;
+};
+
+// Analytic sky with a sun; see environment.h for the radiance formula.
+struct Sun {
+  float elevation_degrees = 45.0f;  // above the horizon, [-90, 90]
+  // Azimuth about +Y: 0 puts the sun toward +Z, 90 toward +X. Any finite value.
+  float azimuth_degrees = 0.0f;
+  float angular_radius_degrees = 2.0f;  // disc half-angle, (0, 45]; the real sun is ~0.27
+  glm::vec3 color{1.0f, 0.96f, 0.9f};   // linear RGB tint, each >= 0
+  // Irradiance from the whole disc onto a surface facing the sun, per unit of color (>= 0; 0
+  // removes the sun). Independent of the radius: the disc radiance is
+  // irradiance / (pi * sin^2(radius)).
+  float irradiance = 3.0f;
+  bool operator==(const Sun&) const = default;
+};
+
+struct Sky {
+  glm::vec3 zenith_color{0.25f, 0.45f, 0.85f};   // linear RGB radiance straight up, >= 0
+  glm::vec3 horizon_color{0.75f, 0.85f, 1.0f};   // at the horizon, >= 0
+  glm::vec3 nadir_color{0.3f, 0.28f, 0.25f};     // straight down (distant ground), >= 0
+  float radiance = 0.5f;  // multiplies the three colors, >= 0
+  bool operator==(const Sky&) const = default;
+};
+
+// Environment lighting: the analytic sky, or an equirectangular HDR/EXR image (mapping in
+// environment.h). `intensity` scales either; the whole environment is rotated by
+// rotation_degrees about +Y (right-hand rule: positive turns +Z toward +X).
+struct Environment {
+  enum class Type { sky, map };
+  Type type = Type::sky;
+  Sun sun;                 // used when type == sky
+  Sky sky;                 // used when type == sky
+  std::string map_path;    // used when type == map: *.hdr or *.exr, relative to the scene folder
+  float intensity = 1.0f;  // >= 0
+  float rotation_degrees = 0.0f;
+  bool operator==(const Environment&) const = default;
+};
+
+// A square in the y = 0 plane centered at the origin.
+struct Ground {
+  bool enabled = true;
+  float size = 20.0f;                 // edge length, meters, > 0
+  glm::vec3 albedo{0.8f, 0.8f, 0.8f}; // linear RGB, each in [0, 1]
+  bool operator==(const Ground&) const = default;
+};
+
+struct StaticMesh {
+  std::string model;  // glTF/GLB path relative to the scene folder
+  Transform transform;
+  std::optional<glm::vec3> albedo;  // replaces every material's base color, each in [0, 1]
+  bool operator==(const StaticMesh&) const = default;
+};
+
+// Camera kinds. Every kind has near/far clip distances (meters, 0 < near < far); fov is the
+// vertical field of view in degrees, [1, 179]. Evaluate with camera.h.
+struct FixedCamera {
+  glm::vec3 position{0.0f, 1.5f, 5.0f};
+  glm::vec3 target{0.0f, 1.0f, 0.0f};  // must differ from position
+  glm::vec3 up{0.0f, 1.0f, 0.0f};      // not parallel to target - position
+  float fov_degrees = 45.0f;
+  bool operator==(const FixedCamera&) const = default;
+};
+
+// Circles `target` at `distance`; azimuth(t) = start_azimuth_degrees + degrees_per_second * t,
+// measured like the sun's (0: camera on the +Z side of the target, 90: +X side).
+struct OrbitCamera {
+  glm::vec3 target{0.0f, 1.0f, 0.0f};
+  float distance = 5.0f;                // meters, > 0
+  float elevation_degrees = 20.0f;      // above the target's horizontal plane, [-89, 89]
+  float start_azimuth_degrees = 0.0f;
+  float degrees_per_second = 30.0f;     // positive: counter-clockwise seen from above
+  float fov_degrees = 45.0f;
+  bool operator==(const OrbitCamera&) const = default;
+};
+
+// Follows a character's root: eye = root + offset, target = root + (0, look_at_height, 0), where
+// root is the box-filtered root position over [t - smoothing_s, t] (0: no smoothing). The
+// filter is stateless so any frame renders the same alone or in a sequence (shards).
+struct FollowCamera {
+  int character = 0;                       // index into Scene::characters
+  glm::vec3 offset{0.0f, 1.5f, 4.0f};      // meters, world axes; must not be (0, look_at_height, 0)
+  float look_at_height = 1.0f;             // meters above the root
+  float smoothing_s = 0.5f;                // seconds, >= 0
+  float fov_degrees = 45.0f;
+  bool operator==(const FollowCamera&) const = default;
+};
+
+struct CameraKey {
+  float time_s = 0.0f;
+  glm::vec3 position{0.0f, 1.5f, 5.0f};
+  glm::vec3 target{0.0f, 1.0f, 0.0f};  // must differ from position
+  float fov_degrees = 45.0f;
+  bool operator==(const CameraKey&) const = default;
+};
+
+// Keys with strictly increasing times. Before the first key and after the last the camera holds
+// that key. Position and target interpolate linearly or with Catmull-Rom (a cubic Hermite through
+// the keys, tangents from central differences in time, one-sided at the ends); fov is always
+// linear so it cannot overshoot.
+struct KeyframedCamera {
+  enum class Interpolation { linear, catmull_rom };
+  std::vector<CameraKey> keys;  // at least one
+  Interpolation interpolation = Interpolation::catmull_rom;
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  bool operator==(const KeyframedCamera&) const = default;
+};
+
+struct Camera {
+  std::variant<FixedCamera, OrbitCamera, FollowCamera, KeyframedCamera> kind;
+  float near_m = 0.05f;
+  float far_m = 200.0f;
+  bool operator==(const Camera&) const = default;
+};
+
+enum class IndirectOperator { point, averaged, exact };
+enum class Exponential { hyb, ol };
+enum class Upsampling { bilateral, bilinear };
+enum class SplatMethod { raster, compute };
+enum class Tonemap { aces, reinhard, clamp };
+
+// Method settings (the paper's symbols in brackets).
+struct RenderSettings {
+  int sh_order = 4;              // n bands, n^2 coefficients; 3..6
+  int receiver_scale = 4;        // k: receivers at display size / k per axis; 1, 2, 4 or 8
+  float shadow_eta = 15.0f;      // [eta] sphere-of-influence radius / proxy radius, > 1
+  float indirect_eta = 10.0f;    // same for indirect accumulation, > 1
+  IndirectOperator indirect_operator = IndirectOperator::averaged;
+  Exponential exponential = Exponential::hyb;
+  float hyb_tau = 0.25f;         // HYB: halve until |f_hat| <= tau, > 0
+  Upsampling upsampling = Upsampling::bilateral;
+  SplatMethod splat = SplatMethod::raster;
+  bool indirect = true;
+  Tonemap tonemap = Tonemap::aces;
+  float exposure_ev = 0.0f;      // radiance is multiplied by 2^exposure_ev before the tonemap
+  bool operator==(const RenderSettings&) const = default;
+};
+
+enum class OutputFormat { png, exr, mp4 };
+
+// Frame f (first_frame <= f < first_frame + frame_count) shows scene time f / fps.
+struct Output {
+  int width = 512;    // pixels, 16..8192
+  int height = 512;   // pixels, 16..8192
+  double fps = 24.0;  // frames per second, (0, 1000]
+  int first_frame = 0;   // >= 0
+  int frame_count = 96;  // >= 1; the file may give "last" (inclusive) instead
+  std::vector<OutputFormat> formats{OutputFormat::png};  // non-empty, no repeats
+  bool operator==(const Output&) const = default;
+};
+
+struct Scene {
+  std::string description;  // free text, shown by tools
+  std::vector<Character> characters;
+  Environment environment;
+  Ground ground;
+  std::vector<StaticMesh> static_meshes;
+  Camera camera;
+  RenderSettings render;
+  Output output;
+  // Folder of the scene file that relative paths resolve against; not written to the file.
+  // Empty for scenes built in code (paths then resolve against the working directory).
+  std::filesystem::path base_dir;
+  bool operator==(const Scene&) const = default;
+};
+
+// Scene time of frame `frame` in seconds.
+double frame_time_s(const Output& output, int frame);
+int last_frame(const Output& output);  // inclusive
+
+// A path from the file made absolute-or-relative against the scene folder (absolute paths are
+// kept). Not for "builtin:" models.
+std::filesystem::path resolve_scene_path(const Scene& scene, const std::string& path);
+bool is_builtin_mannequin(std::string_view model);
+// The model file to load: assets_dir / "mannequin.glb" for the built-in, else resolved.
+std::filesystem::path resolve_model_path(const Scene& scene, const std::string& model,
+                                         const std::filesystem::path& assets_dir);
+// The rig cached next to a model: "dir/hero.glb" -> "dir/hero.proxies.json".
+std::filesystem::path default_proxy_path(const std::filesystem::path& model_file);
+// The rig for a character: its `proxies` resolved, or default_proxy_path of its model.
+std::filesystem::path resolve_proxy_path(const Scene& scene, const Character& character,
+                                         const std::filesystem::path& assets_dir);
+
+}  // namespace proxygi::scene
