@@ -1,7 +1,7 @@
 #pragma once
 // Blending two sampled local poses by a weight: out = (1 − weight) · a + weight · b per node.
 // Translation and scale are lerped; rotations use shortest-path slerp (sign of b flipped when
-// dot(a, b) < 0), falling back to normalized lerp when the two are within 1e-4 rad. Morph
+// dot(a, b) < 0), falling back to normalized lerp when dot(a, b) > 0.99999 (nearly parallel). Morph
 // weights are lerped. weight = 0 returns a exactly, weight = 1 returns b (sign-corrected).
 //
 //   BlendJob job;

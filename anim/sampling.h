@@ -18,7 +18,7 @@
 // - Per channel, t before the first key or after the last key clamps to that key's value; an
 //   exact key time returns that key's value unchanged; one-key channels hold their value.
 // - STEP: value of the key at or before t. LINEAR: lerp for T/S/weights, shortest-path slerp
-//   for rotations (nlerp below 1e-4 rad apart). CUBICSPLINE: Hermite with both tangents scaled
+//   for rotations (nlerp when nearly parallel, see blending.h). CUBICSPLINE: Hermite with both tangents scaled
 //   by t_d = t[k+1] − t[k]; rotations normalized afterwards.
 // - Channels targeting a node that has a fixed matrix are sampled but have no effect (the
 //   matrix wins in local_to_model).
