@@ -38,7 +38,7 @@ AnalyticSky::AnalyticSky(const Environment& environment)
     : world_to_environment_(world_to_environment(environment)),
       zenith_(environment.sky.zenith_color * (environment.sky.radiance * environment.intensity)),
       horizon_(environment.sky.horizon_color * (environment.sky.radiance * environment.intensity)),
-      nadir_(environment.sky.nadir_color * (environment.sky.radiance * environment.intensity)),
+      below_horizon_(environment.sky.below_horizon_color * (environment.sky.radiance * environment.intensity)),
       sun_direction_(scene::sun_direction(environment)) {
   PROXYGI_CHECK(environment.type == Environment::Type::sky, "AnalyticSky needs a sky environment");
   const float r = glm::radians(environment.sun.angular_radius_degrees);
@@ -52,7 +52,7 @@ AnalyticSky::AnalyticSky(const Environment& environment)
 glm::vec3 AnalyticSky::sky_radiance(const glm::vec3& direction) const {
   const float y = std::clamp((world_to_environment_ * direction).y, -1.0f, 1.0f);
   if (y >= 0.0f) return glm::mix(horizon_, zenith_, std::sqrt(y));
-  return glm::mix(horizon_, nadir_, std::sqrt(-y));
+  return below_horizon_;
 }
 
 glm::vec3 AnalyticSky::radiance(const glm::vec3& direction) const {
@@ -71,17 +71,18 @@ glm::vec3 sky_radiance(const Environment& environment, const glm::vec3& directio
 
 glm::vec2 equirect_uv(const glm::vec3& direction) {
   const glm::vec3 d = glm::normalize(direction);
-  float u = 0.5f - std::atan2(d.x, d.z) / glm::two_pi<float>();
-  u -= std::floor(u);  // atan2 = pi and -pi both land on the seam; keep u in [0, 1)
+  // Inverse of equirect_direction: sin phi ~ d.x, cos phi ~ -d.z.
+  float u = (std::atan2(d.x, -d.z) + glm::pi<float>()) / glm::two_pi<float>();
+  u -= std::floor(u);  // phi = pi and -pi are the same seam column; keep u in [0, 1)
   const float v = std::acos(std::clamp(d.y, -1.0f, 1.0f)) / glm::pi<float>();
   return glm::vec2(u, v);
 }
 
 glm::vec3 equirect_direction(const glm::vec2& uv) {
-  const float phi = (0.5f - uv.x) * glm::two_pi<float>();
-  const float theta = uv.y * glm::pi<float>();
+  const float phi = glm::two_pi<float>() * uv.x - glm::pi<float>();
+  const float theta = glm::pi<float>() * uv.y;
   const float s = std::sin(theta);
-  return glm::normalize(glm::vec3(s * std::sin(phi), std::cos(theta), s * std::cos(phi)));
+  return glm::normalize(glm::vec3(s * std::sin(phi), std::cos(theta), -s * std::cos(phi)));
 }
 
 EnvironmentMapInfo environment_map_info(const Scene& scene) {

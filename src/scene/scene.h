@@ -103,7 +103,7 @@ struct Sun {
 struct Sky {
   glm::vec3 zenith_color{0.25f, 0.45f, 0.85f};   // linear RGB radiance straight up, >= 0
   glm::vec3 horizon_color{0.75f, 0.85f, 1.0f};   // at the horizon, >= 0
-  glm::vec3 nadir_color{0.3f, 0.28f, 0.25f};     // straight down (distant ground), >= 0
+  glm::vec3 below_horizon_color{0.3f, 0.28f, 0.25f};  // uniform below the horizon (distant ground), >= 0
   float radiance = 0.5f;  // multiplies the three colors, >= 0
   bool operator==(const Sky&) const = default;
 };

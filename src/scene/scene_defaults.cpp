@@ -17,7 +17,7 @@ Environment daylight() {
   e.sun.irradiance = 3.0f;
   e.sky.zenith_color = glm::vec3(0.25f, 0.45f, 0.85f);
   e.sky.horizon_color = glm::vec3(0.75f, 0.85f, 1.0f);
-  e.sky.nadir_color = glm::vec3(0.3f, 0.28f, 0.25f);
+  e.sky.below_horizon_color = glm::vec3(0.3f, 0.28f, 0.25f);
   e.sky.radiance = 0.5f;
   return e;
 }

@@ -107,7 +107,7 @@ Environment read_environment(const json& value, const std::string& path) {
       ObjectReader s(*sky, r.field("sky"));
       e.sky.zenith_color = s.vec3("zenith_color", e.sky.zenith_color);
       e.sky.horizon_color = s.vec3("horizon_color", e.sky.horizon_color);
-      e.sky.nadir_color = s.vec3("nadir_color", e.sky.nadir_color);
+      e.sky.below_horizon_color = s.vec3("below_horizon_color", e.sky.below_horizon_color);
       e.sky.radiance = s.number("radiance", e.sky.radiance);
       s.finish();
     }

@@ -144,7 +144,7 @@ void validate_environment(const Environment& e) {
   non_negative(e.sun.irradiance, "environment.sun.irradiance");
   color(e.sky.zenith_color, "environment.sky.zenith_color");
   color(e.sky.horizon_color, "environment.sky.horizon_color");
-  color(e.sky.nadir_color, "environment.sky.nadir_color");
+  color(e.sky.below_horizon_color, "environment.sky.below_horizon_color");
   non_negative(e.sky.radiance, "environment.sky.radiance");
 }
 

@@ -81,7 +81,7 @@ ojson environment_json(const Environment& e) {
               {"irradiance", number(e.sun.irradiance)}};
   j["sky"] = {{"zenith_color", vec(e.sky.zenith_color)},
               {"horizon_color", vec(e.sky.horizon_color)},
-              {"nadir_color", vec(e.sky.nadir_color)},
+              {"below_horizon_color", vec(e.sky.below_horizon_color)},
               {"radiance", number(e.sky.radiance)}};
   return j;
 }

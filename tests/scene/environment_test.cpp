@@ -128,29 +128,39 @@ TEST(Environment, SunDirectionConventionAndRotation) {
   }
 }
 
-TEST(Environment, GradientEndpointsAndContinuousHorizon) {
+TEST(Environment, GradientEndpointsAndHorizon) {
   Environment e;
   e.intensity = 2.0f;
   e.sun.elevation_degrees = -60.0f;  // keep the disc away from the probes
   const AnalyticSky sky(e);
   const float scale = e.sky.radiance * e.intensity;
-  EXPECT_NEAR(glm::length(sky.radiance(glm::vec3(0, 1, 0)) - e.sky.zenith_color * scale), 0.0f, 1e-6f);
-  EXPECT_NEAR(glm::length(sky.radiance(glm::vec3(0, -1, 0)) - e.sky.nadir_color * scale), 0.0f, 1e-6f);
-  EXPECT_NEAR(glm::length(sky.radiance(glm::vec3(1, 0, 0)) - e.sky.horizon_color * scale), 0.0f, 1e-6f);
-  const glm::vec3 above = sky.radiance(glm::normalize(glm::vec3(1, 1e-6f, 0)));
-  const glm::vec3 below = sky.radiance(glm::normalize(glm::vec3(1, -1e-6f, 0)));
-  EXPECT_NEAR(glm::length(above - below), 0.0f, 0.01f);
+  auto expect_color = [&](const glm::vec3& d, const glm::vec3& color) {
+    EXPECT_NEAR(glm::length(sky.radiance(glm::normalize(d)) - color * scale), 0.0f, 1e-5f);
+  };
+  expect_color(glm::vec3(0, 1, 0), e.sky.zenith_color);
+  expect_color(glm::vec3(1, 0, 0), e.sky.horizon_color);
+  // sqrt gradient: a quarter of the way up in y is half way in color.
+  expect_color(glm::vec3(std::sqrt(1.0f - 0.0625f), 0.25f, 0), glm::mix(e.sky.horizon_color, e.sky.zenith_color, 0.5f));
+  // Uniform below the horizon.
+  for (const glm::vec3& d : {glm::vec3(0, -1, 0), glm::vec3(1, -1e-4f, 0), glm::vec3(-0.3f, -0.5f, 0.8f)}) {
+    expect_color(d, e.sky.below_horizon_color);
+  }
+  // Continuous just above the horizon: the color moves away from horizon_color as sqrt(y).
+  const glm::vec3 near_horizon = sky.radiance(glm::normalize(glm::vec3(1, 1e-8f, 0)));
+  EXPECT_NEAR(glm::length(near_horizon - e.sky.horizon_color * scale),
+              1e-4f * glm::length(e.sky.zenith_color - e.sky.horizon_color) * scale, 1e-6f);
   // The plain-function form agrees with the class.
   EXPECT_EQ(sky_radiance(e, glm::vec3(0, 1, 0)), sky.radiance(glm::vec3(0, 1, 0)));
 }
 
 TEST(Environment, EquirectangularMapping) {
-  EXPECT_NEAR(equirect_uv(glm::vec3(0, 0, 1)).x, 0.5f, 1e-6f);  // center column looks at +Z
-  EXPECT_NEAR(equirect_uv(glm::vec3(0, 0, 1)).y, 0.5f, 1e-6f);
-  EXPECT_NEAR(equirect_uv(glm::vec3(-1, 0, 0)).x, 0.75f, 1e-6f);  // u grows toward -X
-  EXPECT_NEAR(equirect_uv(glm::vec3(1, 0, 0)).x, 0.25f, 1e-6f);
+  EXPECT_NEAR(equirect_uv(glm::vec3(0, 0, -1)).x, 0.5f, 1e-6f);  // center column looks at -Z
+  EXPECT_NEAR(equirect_uv(glm::vec3(0, 0, -1)).y, 0.5f, 1e-6f);
+  EXPECT_NEAR(equirect_uv(glm::vec3(1, 0, 0)).x, 0.75f, 1e-6f);  // u grows toward +X
+  EXPECT_NEAR(equirect_uv(glm::vec3(-1, 0, 0)).x, 0.25f, 1e-6f);
   EXPECT_NEAR(equirect_uv(glm::vec3(0, 1, 0)).y, 0.0f, 1e-6f);  // top row is +Y
   EXPECT_NEAR(equirect_uv(glm::vec3(0, -1, 0)).y, 1.0f, 1e-6f);
+  EXPECT_NEAR(glm::length(equirect_direction(glm::vec2(0.75f, 0.5f)) - glm::vec3(1, 0, 0)), 0.0f, 1e-6f);
   for (const glm::vec3& d : sphere_directions(2000)) {
     const glm::vec2 uv = equirect_uv(d);
     EXPECT_GE(uv.x, 0.0f);

@@ -36,7 +36,7 @@ constexpr const char* kFullScene = R"({
     "sun": {"elevation_degrees": 30, "azimuth_degrees": -60, "angular_radius_degrees": 1.5,
             "color": [1, 0.9, 0.8], "irradiance": 4},
     "sky": {"zenith_color": [0.1, 0.2, 0.3], "horizon_color": [0.4, 0.5, 0.6],
-            "nadir_color": [0.7, 0.8, 0.9], "radiance": 0.75}
+            "below_horizon_color": [0.7, 0.8, 0.9], "radiance": 0.75}
   },
   "ground": {"enabled": false, "size": 12.5, "albedo": [0.5, 0.6, 0.7]},
   "static_meshes": [
@@ -105,7 +105,7 @@ TEST(SceneParse, EveryFieldOfTheFullScene) {
   EXPECT_FLOAT_EQ(e.sun.irradiance, 4.0f);
   EXPECT_EQ(e.sky.zenith_color, glm::vec3(0.1f, 0.2f, 0.3f));
   EXPECT_EQ(e.sky.horizon_color, glm::vec3(0.4f, 0.5f, 0.6f));
-  EXPECT_EQ(e.sky.nadir_color, glm::vec3(0.7f, 0.8f, 0.9f));
+  EXPECT_EQ(e.sky.below_horizon_color, glm::vec3(0.7f, 0.8f, 0.9f));
   EXPECT_FLOAT_EQ(e.sky.radiance, 0.75f);
 
   EXPECT_FALSE(s.ground.enabled);

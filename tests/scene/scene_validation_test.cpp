@@ -72,7 +72,7 @@ const Case kCases[] = {
     {R"({"environment": {"sun": {"irradiance": -1}}})", "{}", "environment.sun.irradiance: must be >= 0"},
     {R"({"environment": {"sun": {"radius": 1}}})", "{}", "environment.sun.radius: unknown key"},
     {R"({"environment": {"sky": {"radiance": -0.1}}})", "{}", "environment.sky.radiance: must be >= 0"},
-    {R"({"environment": {"sky": {"nadir_color": [0, 0, -2]}}})", "{}", "environment.sky.nadir_color[2]: must be >= 0"},
+    {R"({"environment": {"sky": {"below_horizon_color": [0, 0, -2]}}})", "{}", "environment.sky.below_horizon_color[2]: must be >= 0"},
     {R"({"environment": {"type": "map"}})", "{}", "environment.path: required field is missing"},
     {R"({"environment": {"type": "map", "path": "sky.png"}})", "{}", "environment.path: expected an .hdr or .exr file"},
     {R"({"environment": {"type": "map", "path": "a.hdr", "sun": {}}})", "{}",
