@@ -41,8 +41,64 @@ struct SkinPush {
   uint use_normal_matrices;  // 0: mat3(skin matrix) as in the CPU fast path
 };
 
+// ---- the soft-GI frame (gbuffer, receivers, shadow_gather, exponentiate, indirect, upsample,
+// composite). World space: glTF (+Y up, meters). Radiance linear RGB; "irradiance" E = ∫ L cos
+// (not divided by π); receiver radiance = albedo / π · E.
+PROXYGI_CONST(uint, kFrameLocalSize, 8u);      // compute passes run 8×8 workgroups
+PROXYGI_CONST(uint, kMaxProxies, 1024u);       // per frame, all characters together
+PROXYGI_CONST(uint, kIndirectOrder, 3u);       // indirect light is order 3 (paper §5)
+PROXYGI_CONST(uint, kMaxShCoefficients, 36u);  // order 6
+
+// One proxy sphere in world space, streamed every frame through the ring buffer.
+struct ProxySphere {
+  vec4 center_radius;  // xyz center (m), w radius (m)
+  vec4 albedo;         // linear rgb, w unused
+};
+
+// Per-frame constants (uniform buffer, std140: only vec4/mat4/uvec4 members).
+struct FrameConstants {
+  mat4 view_projection;       // world → Vulkan clip space
+  mat4 inverse_view_projection;  // clip → world (background rays)
+  vec4 eye_position;          // xyz eye (m)
+  vec4 eye_forward;           // xyz unit image-plane normal E: eye depth z = (p − e)·E
+  uvec4 sizes;                // display width, height, receiver width, height
+  uvec4 counts;               // proxy count, receiver scale k, SH order, upsample mode (0 bilateral, 1 bilinear)
+  vec4 shadow;                // η shadows, η indirect, HYB τ, log-table rows
+  vec4 tables;                // OL max norm, OL rows, visibility-table rows, LH cube face size
+  vec4 output_params;         // exposure multiplier, tonemap (0 aces, 1 reinhard, 2 clamp), bilateral ε (m), indirect on (1/0)
+  vec4 irradiance_sh[3u * kIndirectOrder * kIndirectOrder];  // L̃ = L * clamped cosine, order 3, r then g then b; x used
+};
+
+// Push constants of composite.comp.
+struct CompositePush {
+  uint environment_width;   // equirectangular map (sh/environment.h convention), vec4 texels
+  uint environment_height;
+  uint padding0;
+  uint padding1;
+};
+
+// Push constants of gbuffer.vert/frag: one draw per primitive.
+struct GbufferPush {
+  vec4 base_color;  // linear rgba factor
+  uint vertex_offset_unused;
+  uint flip_normals;  // 1: negative-determinant transform (not used by skinned meshes)
+  uint padding0;
+  uint padding1;
+};
+
+// One receiver (receiver buffer, 1/k of display resolution).
+struct Receiver {
+  vec4 position_depth;  // xyz world point p, w eye depth (0: no receiver here)
+  vec4 normal;          // xyz unit normal N, w unused
+};
+
 #ifdef __cplusplus
 static_assert(sizeof(TestPatternPush) == 16);
+static_assert(sizeof(ProxySphere) == 32);
+static_assert(sizeof(FrameConstants) == 128 + 16 * 7 + 16 * 27);
+static_assert(sizeof(GbufferPush) == 32);
+static_assert(sizeof(Receiver) == 32);
+static_assert(sizeof(CompositePush) == 16);
 static_assert(sizeof(SkinPush) == 16);
 }  // namespace proxygi::gpu_layout
 #endif

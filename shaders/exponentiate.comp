@@ -1,0 +1,105 @@
+#version 460
+// Exponentiation and direct shading (frame step 5): O_p = exp*(f) by HYB (DC isolation, OL on
+// f̂/2^s, s squarings), then E_direct = O_p · LH(N) per colour from the LH cube maps.
+// Output per receiver: (E_r, E_g, E_b, (O_p)_0). CPU twin: render::exponentiate_and_shade.
+#extension GL_GOOGLE_include_directive : require
+#include "frame_common.glsl"
+#include "sh/sh_product.glsl"
+
+#define SH_COUNT (SH_ORDER * SH_ORDER)
+#define SH_JOIN(a, b) a##b
+#define SH_EXPAND_JOIN(a, b) SH_JOIN(a, b)
+#define sh_square SH_EXPAND_JOIN(sh_square_, SH_ORDER)
+
+layout(local_size_x = kFrameLocalSize, local_size_y = kFrameLocalSize) in;
+layout(std140, set = 0, binding = 0) uniform Frame { FrameConstants frame; };
+layout(std430, set = 0, binding = 1) readonly buffer Receivers { Receiver receivers[]; };
+layout(std430, set = 0, binding = 2) readonly buffer LogOcclusion { float log_occlusion[]; };
+layout(std430, set = 0, binding = 3) readonly buffer OptimalLinear { vec2 optimal_linear[]; };  // (a, b) rows
+layout(std430, set = 0, binding = 4) readonly buffer LightingCube { float lighting_cube[]; };   // r, g, b cubes
+layout(std430, set = 0, binding = 5) writeonly buffer Direct { vec4 direct[]; };
+
+vec2 optimal_linear_lookup(float norm) {
+  int rows = int(frame.tables.y);
+  float position = clamp(norm / frame.tables.x, 0.0, 1.0) * float(rows - 1);
+  int row = min(int(position), rows - 2);
+  float t = position - float(row);
+  return optimal_linear[row] + t * (optimal_linear[row + 1] - optimal_linear[row]);
+}
+
+// LH(N) of one channel, bilinear within the cube face N hits (sh/environment.h layout).
+void lighting_lookup(int channel, vec3 n, out float lh[SH_COUNT]) {
+  vec3 a = abs(n);
+  int face;
+  float sc, tc, major;
+  if (a.x >= a.y && a.x >= a.z) {
+    face = n.x >= 0.0 ? 0 : 1; major = a.x; sc = n.x >= 0.0 ? -n.z : n.z; tc = -n.y;
+  } else if (a.y >= a.z) {
+    face = n.y >= 0.0 ? 2 : 3; major = a.y; sc = n.x; tc = n.y >= 0.0 ? n.z : -n.z;
+  } else {
+    face = n.z >= 0.0 ? 4 : 5; major = a.z; sc = n.z >= 0.0 ? n.x : -n.x; tc = -n.y;
+  }
+  int size = int(frame.tables.w);
+  float u = clamp((0.5 * (sc / major + 1.0)) * float(size) - 0.5, 0.0, float(size - 1));
+  float v = clamp((0.5 * (tc / major + 1.0)) * float(size) - 0.5, 0.0, float(size - 1));
+  int x0 = min(int(u), size - 1), y0 = min(int(v), size - 1);
+  int x1 = min(x0 + 1, size - 1), y1 = min(y0 + 1, size - 1);
+  float fx = u - float(x0), fy = v - float(y0);
+  int channel_base = channel * 6 * size * size * SH_COUNT;
+  int t00 = channel_base + ((face * size + y0) * size + x0) * SH_COUNT;
+  int t10 = channel_base + ((face * size + y0) * size + x1) * SH_COUNT;
+  int t01 = channel_base + ((face * size + y1) * size + x0) * SH_COUNT;
+  int t11 = channel_base + ((face * size + y1) * size + x1) * SH_COUNT;
+  for (int i = 0; i < SH_COUNT; ++i) {
+    float top = lighting_cube[t00 + i] + fx * (lighting_cube[t10 + i] - lighting_cube[t00 + i]);
+    float bottom = lighting_cube[t01 + i] + fx * (lighting_cube[t11 + i] - lighting_cube[t01 + i]);
+    lh[i] = top + fy * (bottom - top);
+  }
+}
+
+void main() {
+  uvec2 receiver = gl_GlobalInvocationID.xy;
+  uvec2 receiver_size = frame.sizes.zw;
+  if (any(greaterThanEqual(receiver, receiver_size))) return;
+  uint index = receiver.y * receiver_size.x + receiver.x;
+  Receiver r = receivers[index];
+  if (r.position_depth.w <= 0.0) {
+    direct[index] = vec4(0.0, 0.0, 0.0, kSqrtFourPi);
+    return;
+  }
+  float f[SH_COUNT];
+  float norm_squared = 0.0;
+  for (int i = 0; i < SH_COUNT; ++i) {
+    f[i] = log_occlusion[index * SH_COUNT + i];
+    if (i > 0) norm_squared += f[i] * f[i];
+  }
+  float dc = exp(0.28209479177387814 * f[0]);
+  float norm = sqrt(norm_squared);
+  float tau = frame.shadow.z;
+  int squarings = 0;
+  float scale = 1.0;
+  while (norm * scale > tau && squarings < 16) {
+    scale *= 0.5;
+    ++squarings;
+  }
+  vec2 ab = optimal_linear_lookup(norm * scale);
+  float g[SH_COUNT];
+  g[0] = ab.x * kSqrtFourPi;
+  for (int i = 1; i < SH_COUNT; ++i) g[i] = ab.y * scale * f[i];
+  for (int k = 0; k < squarings; ++k) {
+    float squared[SH_COUNT];
+    sh_square(g, squared);
+    g = squared;
+  }
+  for (int i = 0; i < SH_COUNT; ++i) g[i] *= dc;
+
+  vec3 irradiance;
+  for (int channel = 0; channel < 3; ++channel) {
+    float lh[SH_COUNT];
+    lighting_lookup(channel, r.normal.xyz, lh);
+    float sum = 0.0;
+    for (int i = 0; i < SH_COUNT; ++i) sum += g[i] * lh[i];
+    irradiance[channel] = max(sum, 0.0);
+  }
+  direct[index] = vec4(irradiance, g[0]);
+}

@@ -1,0 +1,24 @@
+#version 460
+// G-buffer pass (frame step 2), fragment stage: world position + eye depth, unit normal facing
+// the viewer (surfaces are treated as double-sided), linear albedo.
+#extension GL_GOOGLE_include_directive : require
+#include "shared/layouts.h"
+
+layout(std140, set = 0, binding = 0) uniform Frame { FrameConstants frame; };
+layout(push_constant) uniform Push { GbufferPush push; };
+
+layout(location = 0) in vec3 world_position;
+layout(location = 1) in vec3 world_normal;
+layout(location = 0) out vec4 out_position_depth;
+layout(location = 1) out vec4 out_normal;
+layout(location = 2) out vec4 out_albedo;
+
+void main() {
+  vec3 normal = normalize(world_normal);
+  vec3 to_eye = frame.eye_position.xyz - world_position;
+  if (dot(normal, to_eye) < 0.0) normal = -normal;
+  float eye_depth = dot(world_position - frame.eye_position.xyz, frame.eye_forward.xyz);
+  out_position_depth = vec4(world_position, max(eye_depth, 1e-6));
+  out_normal = vec4(normal, 1.0);
+  out_albedo = vec4(push.base_color.rgb, 1.0);
+}

@@ -1,0 +1,83 @@
+#version 460
+// Indirect accumulation (frame step 6), order 3 (paper §5, averaged operator D by its polynomial
+// fit): E_ind = ξ_p Σ_i (albedo_i/π) κ_i (V_i · H(N)), κ_i = rot(D(s_i), d_i) · L̃,
+// ξ_p = clamp((V_p)_0 / (ω_p/√4π), 0, 1) with (V_p)_0 = √4π − (O_p)_0 from the exponentiation.
+// Output per receiver: (E_r, E_g, E_b, ω_p). CPU twin: render::accumulate_indirect.
+#extension GL_GOOGLE_include_directive : require
+#include "frame_common.glsl"
+#include "sh/sh_basis.glsl"
+
+layout(local_size_x = kFrameLocalSize, local_size_y = kFrameLocalSize) in;
+layout(std140, set = 0, binding = 0) uniform Frame { FrameConstants frame; };
+layout(std430, set = 0, binding = 1) readonly buffer Receivers { Receiver receivers[]; };
+layout(std140, set = 0, binding = 2) uniform Proxies { ProxySphere proxies[kMaxProxies]; };
+layout(std430, set = 0, binding = 3) readonly buffer VisibilityTable { float visibility_table[]; };
+layout(std430, set = 0, binding = 4) readonly buffer Direct { vec4 direct[]; };
+layout(std430, set = 0, binding = 5) writeonly buffer Indirect { vec4 indirect[]; };
+
+float influence_fade(float s, float eta, int rows) {
+  float width = 4.0 / float(rows - 1);
+  float t = clamp((s - 1.0 / eta) / width, 0.0, 1.0);
+  return t * t * (3.0 - 2.0 * t);
+}
+
+void main() {
+  uvec2 receiver = gl_GlobalInvocationID.xy;
+  uvec2 receiver_size = frame.sizes.zw;
+  if (any(greaterThanEqual(receiver, receiver_size))) return;
+  uint index = receiver.y * receiver_size.x + receiver.x;
+  Receiver r = receivers[index];
+  if (r.position_depth.w <= 0.0 || frame.output_params.w == 0.0) {
+    indirect[index] = vec4(0.0);
+    return;
+  }
+  vec3 p = r.position_depth.xyz;
+  vec3 normal = r.normal.xyz;
+  float normal_basis[9];
+  sh_eval_basis_3(normal, normal_basis);
+  const float cosine[3] = float[](0.886226925, 1.023326708, 0.495415912);
+  float eta = frame.shadow.y;
+  float minimum_sine = 1.0 / eta;
+  int rows = int(frame.tables.z);
+  vec3 summed = vec3(0.0);
+  float solid_angle_sum = 0.0;
+  uint proxy_count = frame.counts.x;
+  for (uint i = 0u; i < proxy_count; ++i) {
+    vec4 sphere = proxies[i].center_radius;
+    vec3 offset = sphere.xyz - p;
+    float reach = eta * sphere.w;
+    if (dot(offset, offset) >= reach * reach) continue;
+    vec3 direction;
+    float sine;
+    if (!proxy_seen_from(p, normal, sphere.xyz, sphere.w, direction, sine) || sine <= minimum_sine) continue;
+    float basis[9];
+    sh_eval_basis_3(direction, basis);
+    vec3 averaged = vec3(0.28209, (0.08432 * sine - 0.25073) * sine - 0.32494,
+                         ((-0.22230 * sine + 0.22502) * sine + 0.47398) * sine + 0.15950);
+    float seen_cosine = 0.0;
+    vec3 kappa = vec3(0.0);
+    for (int l = 0; l < 3; ++l) {
+      float visibility;
+      ZONAL_LOOKUP(visibility_table, rows, 3, sine, l, visibility);
+      float band_normal = 0.0;
+      vec3 band_light = vec3(0.0);
+      for (int m = -l; m <= l; ++m) {
+        int c = l * (l + 1) + m;
+        band_normal += basis[c] * normal_basis[c];
+        band_light += basis[c] * vec3(frame.irradiance_sh[c].x, frame.irradiance_sh[9 + c].x, frame.irradiance_sh[18 + c].x);
+      }
+      float scale = zonal_scale(l);
+      seen_cosine += scale * visibility * scale * cosine[l] * band_normal;
+      kappa += scale * averaged[l] * band_light;
+    }
+    summed += proxies[i].albedo.rgb / kPi * max(kappa, vec3(0.0)) * max(seen_cosine, 0.0);
+    float solid_angle = 2.0 * kPi * (1.0 - sqrt(max(1.0 - sine * sine, 0.0)));
+    solid_angle_sum += solid_angle * influence_fade(sine, eta, rows);
+  }
+  vec3 irradiance = vec3(0.0);
+  if (solid_angle_sum > 0.0) {
+    float covered_dc = max(kSqrtFourPi - direct[index].w, 0.0);
+    irradiance = summed * clamp(covered_dc * kSqrtFourPi / solid_angle_sum, 0.0, 1.0);
+  }
+  indirect[index] = vec4(irradiance, solid_angle_sum);
+}

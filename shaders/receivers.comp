@@ -1,0 +1,40 @@
+#version 460
+// Receivers pass (frame step 3): one receiver per k×k block of display pixels, the block's
+// center texel, or the first covered texel of the block when the center is background.
+// CPU twin: select_receiver in src/render (tests/gpu compare).
+#extension GL_GOOGLE_include_directive : require
+#include "frame_common.glsl"
+
+layout(local_size_x = kFrameLocalSize, local_size_y = kFrameLocalSize) in;
+layout(std140, set = 0, binding = 0) uniform Frame { FrameConstants frame; };
+layout(set = 0, binding = 1, rgba32f) uniform readonly image2D position_depth_image;
+layout(set = 0, binding = 2, rgba32f) uniform readonly image2D normal_image;
+layout(std430, set = 0, binding = 3) writeonly buffer Receivers { Receiver receivers[]; };
+
+void main() {
+  uvec2 receiver = gl_GlobalInvocationID.xy;
+  uvec2 receiver_size = frame.sizes.zw;
+  if (any(greaterThanEqual(receiver, receiver_size))) return;
+  uint k = frame.counts.y;
+  ivec2 display_size = ivec2(frame.sizes.xy);
+  ivec2 origin = ivec2(receiver * k);
+  ivec2 center = min(origin + ivec2(k / 2u), display_size - 1);
+  ivec2 chosen = center;
+  vec4 position_depth = imageLoad(position_depth_image, center);
+  if (position_depth.w <= 0.0) {
+    for (uint y = 0u; y < k && position_depth.w <= 0.0; ++y)
+      for (uint x = 0u; x < k && position_depth.w <= 0.0; ++x) {
+        ivec2 texel = origin + ivec2(x, y);
+        if (any(greaterThanEqual(texel, display_size))) continue;
+        vec4 candidate = imageLoad(position_depth_image, texel);
+        if (candidate.w > 0.0) {
+          position_depth = candidate;
+          chosen = texel;
+        }
+      }
+  }
+  Receiver result;
+  result.position_depth = position_depth.w > 0.0 ? position_depth : vec4(0.0);
+  result.normal = position_depth.w > 0.0 ? vec4(imageLoad(normal_image, chosen).xyz, 0.0) : vec4(0.0, 1.0, 0.0, 0.0);
+  receivers[receiver.y * receiver_size.x + receiver.x] = result;
+}

@@ -1,0 +1,56 @@
+#version 460
+// Shadow accumulation (frame step 4), the compute-gather variant: every receiver loops over the
+// proxies (per-proxy data in a uniform buffer, as rendering-notes §6 recommends on lavapipe) and
+// sums f = Σ_i rot(O_log(s_i), d_i). The coverage oracle is the faded table: s ≤ 1/η gives 0
+// and is skipped before any SH work. CPU twin: render::accumulate_log_occlusion.
+#extension GL_GOOGLE_include_directive : require
+#include "frame_common.glsl"
+#include "sh/sh_basis.glsl"
+
+#define SH_COUNT (SH_ORDER * SH_ORDER)
+#define SH_JOIN(a, b) a##b
+#define SH_EXPAND_JOIN(a, b) SH_JOIN(a, b)
+#define sh_eval_basis SH_EXPAND_JOIN(sh_eval_basis_, SH_ORDER)
+
+layout(local_size_x = kFrameLocalSize, local_size_y = kFrameLocalSize) in;
+layout(std140, set = 0, binding = 0) uniform Frame { FrameConstants frame; };
+layout(std430, set = 0, binding = 1) readonly buffer Receivers { Receiver receivers[]; };
+layout(std140, set = 0, binding = 2) uniform Proxies { ProxySphere proxies[kMaxProxies]; };
+layout(std430, set = 0, binding = 3) readonly buffer LogTable { float log_table[]; };
+layout(std430, set = 0, binding = 4) writeonly buffer LogOcclusion { float log_occlusion[]; };
+
+void main() {
+  uvec2 receiver = gl_GlobalInvocationID.xy;
+  uvec2 receiver_size = frame.sizes.zw;
+  if (any(greaterThanEqual(receiver, receiver_size))) return;
+  uint index = receiver.y * receiver_size.x + receiver.x;
+  Receiver r = receivers[index];
+  float f[SH_COUNT];
+  for (int i = 0; i < SH_COUNT; ++i) f[i] = 0.0;
+  if (r.position_depth.w > 0.0) {
+    vec3 p = r.position_depth.xyz;
+    vec3 normal = r.normal.xyz;
+    float minimum_sine = 1.0 / frame.shadow.x;
+    int rows = int(frame.shadow.w);
+    uint proxy_count = frame.counts.x;
+    for (uint i = 0u; i < proxy_count; ++i) {
+      vec4 sphere = proxies[i].center_radius;
+      // Cheap reject before the rules: outside the sphere of influence η·r.
+      vec3 offset = sphere.xyz - p;
+      float reach = frame.shadow.x * sphere.w;
+      if (dot(offset, offset) >= reach * reach) continue;
+      vec3 direction;
+      float sine;
+      if (!proxy_seen_from(p, normal, sphere.xyz, sphere.w, direction, sine) || sine <= minimum_sine) continue;
+      float basis[SH_COUNT];
+      sh_eval_basis(direction, basis);
+      for (int l = 0; l < SH_ORDER; ++l) {
+        float zonal;
+        ZONAL_LOOKUP(log_table, rows, SH_ORDER, sine, l, zonal);
+        float scaled = zonal_scale(l) * zonal;
+        for (int m = -l; m <= l; ++m) f[l * (l + 1) + m] += scaled * basis[l * (l + 1) + m];
+      }
+    }
+  }
+  for (int i = 0; i < SH_COUNT; ++i) log_occlusion[index * SH_COUNT + i] = f[i];
+}

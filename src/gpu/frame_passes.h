@@ -1,0 +1,38 @@
+#pragma once
+// The pipelines of the soft-GI frame, one per pass, each named after its shader (debug labels and
+// timing use the names). Inputs and outputs of each pass are the bindings listed in its shader:
+//   gbuffer      frame constants, positions, normals     → position+depth, normal, albedo, depth
+//   receivers    position+depth, normal images           → receivers (1/k)
+//   shadow       receivers, proxies, log-occlusion table → log-occlusion SH per receiver
+//   exponentiate receivers, log SH, OL table, LH cubes   → direct E and (O_p)_0 per receiver
+//   indirect     receivers, proxies, visibility table, direct → indirect E and ω_p per receiver
+//   upsample     G-buffer guides, receivers, direct, indirect → irradiance at display resolution
+//   composite    G-buffer, irradiance, environment       → HDR radiance and tonemapped sRGB
+#include <array>
+
+#include "gpu/pipeline.h"
+
+namespace proxygi::gpu {
+
+class Context;
+
+enum class FramePass { skin, gbuffer, receivers, shadow, exponentiate, indirect, upsample, composite, count };
+const char* frame_pass_name(FramePass pass);
+
+struct FramePipelines {
+  Pipeline gbuffer;
+  Pipeline receivers;
+  Pipeline shadow;
+  Pipeline exponentiate;
+  Pipeline indirect;
+  Pipeline upsample;
+  Pipeline composite;
+
+  // Builds every pipeline for SH order 3..6 (the order-dependent shaders are embedded per order).
+  static Result<FramePipelines> create(const Context& context, int order);
+};
+
+inline constexpr VkFormat kGbufferFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+
+}  // namespace proxygi::gpu

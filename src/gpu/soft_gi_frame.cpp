@@ -1,0 +1,390 @@
+#include "gpu/soft_gi_frame.h"
+
+#include <cstring>
+
+#include "gpu/context.h"
+#include "gpu/transfer.h"
+#include "shaders/shared/layouts.h"
+
+namespace proxygi::gpu {
+namespace {
+
+constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+
+template <class T>
+std::span<const std::uint8_t> bytes_of(std::span<const T> values) {
+  return {reinterpret_cast<const std::uint8_t*>(values.data()), values.size_bytes()};
+}
+
+Result<Buffer> storage(Context& context, VkDeviceSize bytes) {
+  return Buffer::create(context, bytes, kStorage, MemoryKind::device_local);
+}
+
+// Every pass reads what the one before wrote: one conservative barrier between passes.
+void pass_barrier(VkCommandBuffer commands) {
+  VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+  barrier.srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+  barrier.srcAccessMask = VK_ACCESS_2_MEMORY_WRITE_BIT;
+  barrier.dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+  barrier.dstAccessMask = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT;
+  VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+  dependency.memoryBarrierCount = 1;
+  dependency.pMemoryBarriers = &barrier;
+  vkCmdPipelineBarrier2(commands, &dependency);
+}
+
+std::vector<glm::vec4> to_vec4(std::span<const glm::vec3> values, float w) {
+  std::vector<glm::vec4> out;
+  out.reserve(values.size());
+  for (const auto& value : values) out.emplace_back(value, w);
+  return out;
+}
+
+}  // namespace
+
+Result<StaticMesh> upload_static_mesh(Context& context, std::span<const glm::vec3> positions,
+                                      std::span<const glm::vec3> normals, std::span<const std::uint32_t> indices,
+                                      const glm::vec4& base_color) {
+  if (positions.empty() || indices.empty() || normals.size() != positions.size())
+    return make_error("static mesh: needs positions, one normal per position and indices");
+  StaticMesh mesh;
+  const auto positions4 = to_vec4(positions, 1.0f);
+  const auto normals4 = to_vec4(normals, 0.0f);
+  auto p = create_buffer_with_data(context, bytes_of(std::span<const glm::vec4>(positions4)), kStorage);
+  auto n = create_buffer_with_data(context, bytes_of(std::span<const glm::vec4>(normals4)), kStorage);
+  auto i = create_buffer_with_data(context, bytes_of(indices), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+  if (!p) return p.error();
+  if (!n) return n.error();
+  if (!i) return i.error();
+  mesh.positions = std::move(*p);
+  mesh.normals = std::move(*n);
+  mesh.indices = std::move(*i);
+  mesh.index_count = static_cast<std::uint32_t>(indices.size());
+  mesh.base_color = base_color;
+  return mesh;
+}
+
+Result<std::unique_ptr<SoftGiFrame>> SoftGiFrame::create(Context& context, const FrameSettings& settings,
+                                                         const render::FrameTables& tables,
+                                                         const image::ImageF& environment) {
+  if (settings.width < 1 || settings.height < 1) return make_error("frame: empty output size");
+  if (settings.receiver_scale != 1 && settings.receiver_scale != 2 && settings.receiver_scale != 4 &&
+      settings.receiver_scale != 8)
+    return make_error("frame: receiver scale " + std::to_string(settings.receiver_scale) + " is not 1, 2, 4 or 8");
+  if (environment.width < 1 || environment.height < 1) return make_error("frame: empty environment image");
+  std::unique_ptr<SoftGiFrame> frame(new SoftGiFrame(context));
+  frame->settings_ = settings;
+  frame->order_ = tables.settings.order;
+  auto pipelines = FramePipelines::create(context, frame->order_);
+  if (!pipelines) return pipelines.error();
+  frame->pipelines_ = std::move(*pipelines);
+
+  const VkImageUsageFlags target_usage =
+      VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+  for (Image* image : {&frame->position_depth_, &frame->normal_, &frame->albedo_}) {
+    auto made = Image::create(context, settings.width, settings.height, kGbufferFormat, target_usage);
+    if (!made) return made.error();
+    *image = std::move(*made);
+  }
+  auto depth = Image::create(context, settings.width, settings.height, kDepthFormat,
+                             VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT);
+  if (!depth) return depth.error();
+  frame->depth_ = std::move(*depth);
+
+  const VkDeviceSize receivers = VkDeviceSize(settings.receiver_width()) * settings.receiver_height();
+  const VkDeviceSize pixels = VkDeviceSize(settings.width) * settings.height;
+  const VkDeviceSize coefficients = VkDeviceSize(frame->order_) * VkDeviceSize(frame->order_);
+  struct Target {
+    Buffer* buffer;
+    VkDeviceSize bytes;
+  };
+  const Target targets[] = {
+      {&frame->receivers_, receivers * sizeof(gpu_layout::Receiver)},
+      {&frame->log_occlusion_, receivers * coefficients * sizeof(float)},
+      {&frame->direct_, receivers * sizeof(glm::vec4)},
+      {&frame->indirect_, receivers * sizeof(glm::vec4)},
+      {&frame->irradiance_, pixels * sizeof(glm::vec4)},
+      {&frame->hdr_, pixels * sizeof(glm::vec4)},
+      {&frame->ldr_, pixels * sizeof(std::uint32_t)},
+  };
+  for (const auto& target : targets) {
+    auto made = storage(context, target.bytes);
+    if (!made) return made.error();
+    *target.buffer = std::move(*made);
+  }
+
+  // Tables.
+  std::vector<glm::vec2> optimal_linear;
+  for (int row = 0; row < tables.optimal_linear.rows(); ++row)
+    optimal_linear.emplace_back(tables.optimal_linear.a[std::size_t(row)], tables.optimal_linear.b[std::size_t(row)]);
+  std::vector<float> cubes;
+  for (const auto& cube : tables.lighting_cube) cubes.insert(cubes.end(), cube.values.begin(), cube.values.end());
+  struct TableUpload {
+    Buffer* buffer;
+    std::span<const std::uint8_t> bytes;
+  };
+  const TableUpload uploads[] = {
+      {&frame->log_table_, bytes_of(std::span<const float>(tables.log_occlusion.values))},
+      {&frame->visibility_table_, bytes_of(std::span<const float>(tables.proxy_visibility.values))},
+      {&frame->optimal_linear_, bytes_of(std::span<const glm::vec2>(optimal_linear))},
+      {&frame->lighting_cube_, bytes_of(std::span<const float>(cubes))},
+      {&frame->environment_, bytes_of(std::span<const glm::vec4>(environment.pixels))},
+  };
+  for (const auto& upload : uploads) {
+    auto made = create_buffer_with_data(context, upload.bytes, kStorage);
+    if (!made) return made.error();
+    *upload.buffer = std::move(*made);
+  }
+  frame->environment_width_ = std::uint32_t(environment.width);
+  frame->environment_height_ = std::uint32_t(environment.height);
+  frame->log_table_rows_ = float(tables.log_occlusion.rows);
+  frame->visibility_rows_ = float(tables.proxy_visibility.rows);
+  frame->optimal_linear_rows_ = float(tables.optimal_linear.rows());
+  frame->optimal_linear_max_ = tables.optimal_linear.max_norm;
+  frame->cube_size_ = float(tables.lighting_cube[0].face_size);
+  frame->eta_shadow_ = tables.settings.eta_shadow;
+  frame->eta_indirect_ = tables.settings.eta_indirect;
+  frame->irradiance_order3_ = tables.irradiance_order3;
+
+  for (std::uint32_t i = 0; i < std::max(settings.frames_in_flight, 1u); ++i) {
+    Slot slot;
+    auto constants = Buffer::create(context, sizeof(gpu_layout::FrameConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                    MemoryKind::host_visible);
+    auto proxies = Buffer::create(context, sizeof(gpu_layout::ProxySphere) * gpu_layout::kMaxProxies,
+                                  VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryKind::host_visible);
+    if (!constants) return constants.error();
+    if (!proxies) return proxies.error();
+    slot.constants = std::move(*constants);
+    slot.proxies = std::move(*proxies);
+    frame->slots_.push_back(std::move(slot));
+  }
+  return frame;
+}
+
+Status SoftGiFrame::write_slot(std::uint32_t slot, const FrameView& view, std::span<const render::Sphere> spheres) {
+  if (slot >= slots_.size()) return make_error("frame: slot " + std::to_string(slot) + " out of range");
+  if (spheres.size() > gpu_layout::kMaxProxies)
+    return make_error("frame: " + std::to_string(spheres.size()) + " proxies, at most " +
+                      std::to_string(gpu_layout::kMaxProxies) + " per frame");
+  gpu_layout::FrameConstants constants{};
+  constants.view_projection = view.projection * view.view;
+  constants.inverse_view_projection = glm::inverse(constants.view_projection);
+  constants.eye_position = glm::vec4(view.eye, 1.0f);
+  constants.eye_forward = glm::vec4(glm::normalize(view.forward), 0.0f);
+  constants.sizes = glm::uvec4(settings_.width, settings_.height, settings_.receiver_width(), settings_.receiver_height());
+  constants.counts = glm::uvec4(std::uint32_t(spheres.size()), settings_.receiver_scale, std::uint32_t(order_),
+                                std::uint32_t(settings_.upsample));
+  constants.shadow = glm::vec4(eta_shadow_, eta_indirect_, settings_.hybrid_tau, log_table_rows_);
+  constants.tables = glm::vec4(optimal_linear_max_, optimal_linear_rows_, visibility_rows_, cube_size_);
+  constants.output_params = glm::vec4(settings_.exposure, float(int(settings_.tonemap)),
+                                      settings_.bilateral_depth_epsilon, settings_.indirect ? 1.0f : 0.0f);
+  for (int channel = 0; channel < 3; ++channel)
+    for (int i = 0; i < 9; ++i)
+      constants.irradiance_sh[channel * 9 + i] = glm::vec4(irradiance_order3_[std::size_t(channel)][std::size_t(i)], 0, 0, 0);
+  std::memcpy(slots_[slot].constants.mapped(), &constants, sizeof(constants));
+
+  auto* proxies = static_cast<gpu_layout::ProxySphere*>(slots_[slot].proxies.mapped());
+  for (std::size_t i = 0; i < spheres.size(); ++i) {
+    proxies[i].center_radius = glm::vec4(spheres[i].center, spheres[i].radius);
+    proxies[i].albedo = glm::vec4(spheres[i].albedo, 1.0f);
+  }
+  return {};
+}
+
+void SoftGiFrame::record(VkCommandBuffer commands, std::uint32_t slot, std::span<const DrawItem> draws) const {
+  const Slot& current = slots_[slot];
+  const std::uint32_t width = settings_.width, height = settings_.height;
+  const std::uint32_t receiver_width = settings_.receiver_width(), receiver_height = settings_.receiver_height();
+  auto dispatch_2d = [&](std::uint32_t w, std::uint32_t h) {
+    vkCmdDispatch(commands, group_count(w, gpu_layout::kFrameLocalSize), group_count(h, gpu_layout::kFrameLocalSize), 1);
+  };
+
+  // 2 G-buffer.
+  context_.begin_label(commands, frame_pass_name(FramePass::gbuffer));
+  for (const Image* image : {&position_depth_, &normal_, &albedo_})
+    transition(commands, *image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+  transition(commands, depth_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
+  VkRenderingAttachmentInfo colors[3];
+  const Image* color_images[3] = {&position_depth_, &normal_, &albedo_};
+  for (int i = 0; i < 3; ++i) {
+    colors[i] = VkRenderingAttachmentInfo{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    colors[i].imageView = color_images[i]->view();
+    colors[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    colors[i].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    colors[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    colors[i].clearValue.color = {{0.0f, 0.0f, 0.0f, 0.0f}};
+  }
+  VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+  depth.imageView = depth_.view();
+  depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+  depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  depth.clearValue.depthStencil = {1.0f, 0};
+  VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+  rendering.renderArea = {{0, 0}, {width, height}};
+  rendering.layerCount = 1;
+  rendering.colorAttachmentCount = 3;
+  rendering.pColorAttachments = colors;
+  rendering.pDepthAttachment = &depth;
+  vkCmdBeginRendering(commands, &rendering);
+  const VkViewport viewport{0, 0, float(width), float(height), 0, 1};
+  const VkRect2D scissor{{0, 0}, {width, height}};
+  vkCmdSetViewport(commands, 0, 1, &viewport);
+  vkCmdSetScissor(commands, 0, 1, &scissor);
+  pipelines_.gbuffer.bind(commands);
+  for (const DrawItem& draw : draws) {
+    DescriptorPush()
+        .uniform_buffer(0, current.constants)
+        .storage_buffer(1, *draw.positions)
+        .storage_buffer(2, *draw.normals)
+        .push(context_, commands, pipelines_.gbuffer);
+    gpu_layout::GbufferPush push{};
+    push.base_color = draw.base_color;
+    pipelines_.gbuffer.push_constants(commands, &push, sizeof(push));
+    vkCmdBindIndexBuffer(commands, draw.indices->handle(), 0, VK_INDEX_TYPE_UINT32);
+    vkCmdDrawIndexed(commands, draw.index_count, 1, 0, 0, 0);
+  }
+  vkCmdEndRendering(commands);
+  for (const Image* image : {&position_depth_, &normal_, &albedo_})
+    transition(commands, *image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL);
+  context_.end_label(commands);
+
+  // 3 receivers.
+  context_.begin_label(commands, frame_pass_name(FramePass::receivers));
+  pipelines_.receivers.bind(commands);
+  DescriptorPush()
+      .uniform_buffer(0, current.constants)
+      .storage_image(1, position_depth_.view())
+      .storage_image(2, normal_.view())
+      .storage_buffer(3, receivers_)
+      .push(context_, commands, pipelines_.receivers);
+  dispatch_2d(receiver_width, receiver_height);
+  pass_barrier(commands);
+  context_.end_label(commands);
+
+  // 4 shadow accumulation.
+  context_.begin_label(commands, frame_pass_name(FramePass::shadow));
+  pipelines_.shadow.bind(commands);
+  DescriptorPush()
+      .uniform_buffer(0, current.constants)
+      .storage_buffer(1, receivers_)
+      .uniform_buffer(2, current.proxies)
+      .storage_buffer(3, log_table_)
+      .storage_buffer(4, log_occlusion_)
+      .push(context_, commands, pipelines_.shadow);
+  dispatch_2d(receiver_width, receiver_height);
+  pass_barrier(commands);
+  context_.end_label(commands);
+
+  // 5 exponentiation and direct shading.
+  context_.begin_label(commands, frame_pass_name(FramePass::exponentiate));
+  pipelines_.exponentiate.bind(commands);
+  DescriptorPush()
+      .uniform_buffer(0, current.constants)
+      .storage_buffer(1, receivers_)
+      .storage_buffer(2, log_occlusion_)
+      .storage_buffer(3, optimal_linear_)
+      .storage_buffer(4, lighting_cube_)
+      .storage_buffer(5, direct_)
+      .push(context_, commands, pipelines_.exponentiate);
+  dispatch_2d(receiver_width, receiver_height);
+  pass_barrier(commands);
+  context_.end_label(commands);
+
+  // 6 indirect.
+  context_.begin_label(commands, frame_pass_name(FramePass::indirect));
+  pipelines_.indirect.bind(commands);
+  DescriptorPush()
+      .uniform_buffer(0, current.constants)
+      .storage_buffer(1, receivers_)
+      .uniform_buffer(2, current.proxies)
+      .storage_buffer(3, visibility_table_)
+      .storage_buffer(4, direct_)
+      .storage_buffer(5, indirect_)
+      .push(context_, commands, pipelines_.indirect);
+  dispatch_2d(receiver_width, receiver_height);
+  pass_barrier(commands);
+  context_.end_label(commands);
+
+  // 7 upsampling.
+  context_.begin_label(commands, frame_pass_name(FramePass::upsample));
+  pipelines_.upsample.bind(commands);
+  DescriptorPush()
+      .uniform_buffer(0, current.constants)
+      .storage_image(1, position_depth_.view())
+      .storage_image(2, normal_.view())
+      .storage_buffer(3, receivers_)
+      .storage_buffer(4, direct_)
+      .storage_buffer(5, indirect_)
+      .storage_buffer(6, irradiance_)
+      .push(context_, commands, pipelines_.upsample);
+  dispatch_2d(width, height);
+  pass_barrier(commands);
+  context_.end_label(commands);
+
+  // 8 composite.
+  context_.begin_label(commands, frame_pass_name(FramePass::composite));
+  pipelines_.composite.bind(commands);
+  DescriptorPush()
+      .uniform_buffer(0, current.constants)
+      .storage_image(1, position_depth_.view())
+      .storage_image(2, albedo_.view())
+      .storage_buffer(3, irradiance_)
+      .storage_buffer(4, environment_)
+      .storage_buffer(5, hdr_)
+      .storage_buffer(6, ldr_)
+      .push(context_, commands, pipelines_.composite);
+  const gpu_layout::CompositePush composite{environment_width_, environment_height_, 0, 0};
+  pipelines_.composite.push_constants(commands, &composite, sizeof(composite));
+  dispatch_2d(width, height);
+  pass_barrier(commands);
+  context_.end_label(commands);
+}
+
+Result<image::ImageF> SoftGiFrame::read_vec4_buffer(const Buffer& buffer, std::uint32_t width, std::uint32_t height) const {
+  auto bytes = readback(context_, buffer);
+  if (!bytes) return bytes.error();
+  image::ImageF out{int(width), int(height)};
+  std::memcpy(out.pixels.data(), bytes->data(), std::min(bytes->size(), out.pixels.size() * sizeof(glm::vec4)));
+  return out;
+}
+
+Result<std::vector<std::uint8_t>> SoftGiFrame::read_ldr() const { return readback(context_, ldr_); }
+Result<image::ImageF> SoftGiFrame::read_hdr() const { return read_vec4_buffer(hdr_, settings_.width, settings_.height); }
+Result<image::ImageF> SoftGiFrame::read_irradiance() const {
+  return read_vec4_buffer(irradiance_, settings_.width, settings_.height);
+}
+Result<image::ImageF> SoftGiFrame::read_direct() const {
+  return read_vec4_buffer(direct_, settings_.receiver_width(), settings_.receiver_height());
+}
+Result<image::ImageF> SoftGiFrame::read_indirect() const {
+  return read_vec4_buffer(indirect_, settings_.receiver_width(), settings_.receiver_height());
+}
+
+Result<image::ImageF> SoftGiFrame::read_receiver_positions() const {
+  auto bytes = readback(context_, receivers_);
+  if (!bytes) return bytes.error();
+  image::ImageF out{int(settings_.receiver_width()), int(settings_.receiver_height())};
+  const auto* receivers = reinterpret_cast<const gpu_layout::Receiver*>(bytes->data());
+  for (std::size_t i = 0; i < out.pixels.size(); ++i) out.pixels[i] = receivers[i].position_depth;
+  return out;
+}
+
+Result<image::ImageF> SoftGiFrame::read_receiver_normals() const {
+  auto bytes = readback(context_, receivers_);
+  if (!bytes) return bytes.error();
+  image::ImageF out{int(settings_.receiver_width()), int(settings_.receiver_height())};
+  const auto* receivers = reinterpret_cast<const gpu_layout::Receiver*>(bytes->data());
+  for (std::size_t i = 0; i < out.pixels.size(); ++i) out.pixels[i] = receivers[i].normal;
+  return out;
+}
+
+Result<std::vector<float>> SoftGiFrame::read_log_occlusion() const {
+  auto bytes = readback(context_, log_occlusion_);
+  if (!bytes) return bytes.error();
+  std::vector<float> values(bytes->size() / sizeof(float));
+  std::memcpy(values.data(), bytes->data(), values.size() * sizeof(float));
+  return values;
+}
+
+}  // namespace proxygi::gpu

@@ -1,0 +1,202 @@
+#include "render/shading.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/proxy_rules.h"
+#include "sh/basis.h"
+
+namespace proxygi::render {
+namespace {
+
+constexpr float kPi = 3.14159265358979f;
+constexpr float kSqrtFourPi = 3.5449077018110318f;
+
+// sqrt(4π / (2l + 1)), the ZH rotation scale of band l.
+float zonal_scale(int band) { return std::sqrt(4.0f * kPi / float(2 * band + 1)); }
+
+// f += rot(zonal, direction) for the first order² coefficients.
+void add_rotated(int order, std::span<const float> zonal, const glm::vec3& direction, std::span<float> f) {
+  float basis[36];
+  sh::evaluate_basis(order, direction, std::span<float>(basis, std::size_t(order * order)));
+  for (int l = 0; l < order; ++l) {
+    const float scaled = zonal_scale(l) * zonal[std::size_t(l)];
+    for (int m = -l; m <= l; ++m) {
+      const int i = l * (l + 1) + m;
+      f[std::size_t(i)] += scaled * basis[i];
+    }
+  }
+}
+
+// The cheap reject both shaders do first: p outside the sphere of influence η·r.
+bool outside_influence(const glm::vec3& p, const Sphere& sphere, float eta) {
+  const glm::vec3 offset = sphere.center - p;
+  const float reach = eta * sphere.radius;
+  return glm::dot(offset, offset) >= reach * reach;
+}
+
+}  // namespace
+
+std::vector<float> accumulate_log_occlusion(const FrameTables& tables, const glm::vec3& p, const glm::vec3& normal,
+                                            std::span<const Sphere> spheres) {
+  const int order = tables.settings.order;
+  std::vector<float> f(std::size_t(order * order), 0.0f);
+  float zonal[6];
+  const float minimum_sine = 1.0f / tables.settings.eta_shadow;
+  for (const Sphere& sphere : spheres) {
+    if (outside_influence(p, sphere, tables.settings.eta_shadow)) continue;
+    const auto seen = proxy_seen_from(p, normal, sphere.center, sphere.radius);
+    if (!seen || seen->sine <= minimum_sine) continue;
+    tables.log_occlusion.lookup(seen->sine, std::span<float>(zonal, std::size_t(order)));
+    add_rotated(order, std::span<const float>(zonal, std::size_t(order)), seen->direction, f);
+  }
+  return f;
+}
+
+void lookup_lighting_cube(const sh::LightingCubeMap& cube, const glm::vec3& n, std::span<float> out) {
+  const glm::vec3 a = glm::abs(n);
+  int face;
+  float sc, tc, major;
+  if (a.x >= a.y && a.x >= a.z) {
+    face = n.x >= 0 ? 0 : 1;
+    major = a.x;
+    sc = n.x >= 0 ? -n.z : n.z;
+    tc = -n.y;
+  } else if (a.y >= a.z) {
+    face = n.y >= 0 ? 2 : 3;
+    major = a.y;
+    sc = n.x;
+    tc = n.y >= 0 ? n.z : -n.z;
+  } else {
+    face = n.z >= 0 ? 4 : 5;
+    major = a.z;
+    sc = n.z >= 0 ? n.x : -n.x;
+    tc = -n.y;
+  }
+  const int size = cube.face_size;
+  const float u = std::clamp((0.5f * (sc / major + 1.0f)) * float(size) - 0.5f, 0.0f, float(size - 1));
+  const float v = std::clamp((0.5f * (tc / major + 1.0f)) * float(size) - 0.5f, 0.0f, float(size - 1));
+  const int x0 = std::min(int(u), size - 1), y0 = std::min(int(v), size - 1);
+  const int x1 = std::min(x0 + 1, size - 1), y1 = std::min(y0 + 1, size - 1);
+  const float fx = u - float(x0), fy = v - float(y0);
+  const std::size_t count = std::size_t(cube.order * cube.order);
+  auto texel = [&](int x, int y) { return cube.values.data() + ((std::size_t(face) * size + y) * size + x) * count; };
+  const float* t00 = texel(x0, y0);
+  const float* t10 = texel(x1, y0);
+  const float* t01 = texel(x0, y1);
+  const float* t11 = texel(x1, y1);
+  for (std::size_t i = 0; i < count; ++i) {
+    const float top = t00[i] + fx * (t10[i] - t00[i]);
+    const float bottom = t01[i] + fx * (t11[i] - t01[i]);
+    out[i] = top + fy * (bottom - top);
+  }
+}
+
+DirectResult exponentiate_and_shade(const FrameTables& tables, std::span<const float> log_occlusion, float tau,
+                                    const glm::vec3& normal) {
+  const int order = tables.settings.order;
+  const std::size_t count = std::size_t(order * order);
+  std::vector<float> visibility(count);
+  DirectResult result;
+  result.squarings = sh::exp_hybrid(order, log_occlusion, tables.optimal_linear, tau, visibility);
+  result.occlusion_dc = visibility[0];
+  std::vector<float> lh(count);
+  for (int channel = 0; channel < 3; ++channel) {
+    lookup_lighting_cube(tables.lighting_cube[std::size_t(channel)], normal, lh);
+    float irradiance = 0.0f;
+    for (std::size_t i = 0; i < count; ++i) irradiance += visibility[i] * lh[i];
+    result.irradiance[channel] = std::max(irradiance, 0.0f);
+  }
+  return result;
+}
+
+glm::vec3 averaged_operator(float sine) {
+  const float a = sine;
+  return {0.28209f, (0.08432f * a - 0.25073f) * a - 0.32494f, ((-0.22230f * a + 0.22502f) * a + 0.47398f) * a + 0.15950f};
+}
+
+IndirectResult accumulate_indirect(const FrameTables& tables, const glm::vec3& p, const glm::vec3& normal,
+                                   std::span<const Sphere> spheres, float occlusion_dc) {
+  IndirectResult result;
+  float normal_basis[9];
+  sh::evaluate_basis(3, normal, std::span<float>(normal_basis, 9));
+  const float cosine[3] = {0.886226925f, 1.023326708f, 0.495415912f};  // clamped cosine h_l
+  const float minimum_sine = 1.0f / tables.settings.eta_indirect;
+  glm::vec3 summed(0.0f);
+  for (const Sphere& sphere : spheres) {
+    if (outside_influence(p, sphere, tables.settings.eta_indirect)) continue;
+    const auto seen = proxy_seen_from(p, normal, sphere.center, sphere.radius);
+    if (!seen || seen->sine <= minimum_sine) continue;
+    float visibility[3];
+    tables.proxy_visibility.lookup(seen->sine, std::span<float>(visibility, 3));
+    float basis[9];
+    sh::evaluate_basis(3, seen->direction, std::span<float>(basis, 9));
+    const glm::vec3 averaged = averaged_operator(seen->sine);
+    // V_i · H(N) and κ_i = rot(D, d) · L̃, band by band.
+    float seen_cosine = 0.0f;
+    glm::vec3 kappa(0.0f);
+    for (int l = 0; l < 3; ++l) {
+      float band_normal = 0.0f;
+      glm::vec3 band_light(0.0f);
+      for (int m = -l; m <= l; ++m) {
+        const int i = l * (l + 1) + m;
+        band_normal += basis[i] * normal_basis[i];
+        for (int c = 0; c < 3; ++c) band_light[c] += basis[i] * tables.irradiance_order3[std::size_t(c)][std::size_t(i)];
+      }
+      const float scale = zonal_scale(l);
+      seen_cosine += scale * visibility[l] * scale * cosine[l] * band_normal;
+      kappa += scale * averaged[l] * band_light;
+    }
+    summed += sphere.albedo / kPi * glm::max(kappa, glm::vec3(0.0f)) * std::max(seen_cosine, 0.0f);
+    // ω_i, faded like the table so the normalization fades with it.
+    const float solid_angle = 2.0f * kPi * (1.0f - std::sqrt(std::max(1.0f - seen->sine * seen->sine, 0.0f)));
+    result.summed_solid_angle += solid_angle * sh::influence_fade_weight(seen->sine, tables.settings.eta_indirect,
+                                                                         tables.proxy_visibility.rows);
+  }
+  if (result.summed_solid_angle > 0.0f) {
+    // ξ_p = (V_p)_0 / (ω_p / √4π), V_p = 1 − O_p; clamped to [0, 1] so overlap never brightens.
+    const float covered_dc = std::max(kSqrtFourPi - occlusion_dc, 0.0f);
+    const float normalization = std::clamp(covered_dc * kSqrtFourPi / result.summed_solid_angle, 0.0f, 1.0f);
+    result.irradiance = summed * normalization;
+  }
+  return result;
+}
+
+glm::vec3 upsample(std::span<const UpsampleTap, 4> taps, float depth, const glm::vec3& normal, UpsampleMode mode,
+                   float depth_epsilon) {
+  glm::vec3 total(0.0f);
+  float weight_sum = 0.0f, bilinear_sum = 0.0f;
+  for (const auto& tap : taps) {
+    if (tap.depth <= 0.0f) continue;
+    float weight = tap.bilinear_weight;
+    bilinear_sum += tap.bilinear_weight;
+    if (mode == UpsampleMode::bilateral) {
+      const float facing = std::max(glm::dot(normal, tap.normal), 0.0f);
+      weight *= std::pow(facing, 32.0f) / (depth_epsilon + std::abs(depth - tap.depth));
+      weight *= depth_epsilon;  // keeps weights O(1) so the vanishing test below is scale-free
+    }
+    total += weight * tap.value;
+    weight_sum += weight;
+  }
+  if (weight_sum > 1e-6f * std::max(bilinear_sum, 1e-30f)) return total / weight_sum;
+  // Fallback: the valid tap nearest in depth.
+  const UpsampleTap* nearest = nullptr;
+  for (const auto& tap : taps)
+    if (tap.depth > 0.0f && (!nearest || std::abs(tap.depth - depth) < std::abs(nearest->depth - depth))) nearest = &tap;
+  return nearest ? nearest->value : glm::vec3(0.0f);
+}
+
+glm::vec3 tonemap(const glm::vec3& radiance, float exposure, Tonemap curve) {
+  const glm::vec3 x = glm::max(radiance * exposure, glm::vec3(0.0f));
+  switch (curve) {
+    case Tonemap::aces: {  // Narkowicz's fit of the ACES filmic curve
+      const glm::vec3 mapped = (x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f);
+      return glm::clamp(mapped, 0.0f, 1.0f);
+    }
+    case Tonemap::reinhard: return x / (1.0f + x);
+    case Tonemap::clamp: return glm::clamp(x, 0.0f, 1.0f);
+  }
+  return glm::clamp(x, 0.0f, 1.0f);
+}
+
+}  // namespace proxygi::render

@@ -1,0 +1,69 @@
+#pragma once
+// CPU twins of the frame's per-receiver formulas. Each function mirrors one shader, formula for
+// formula and in the same float order where it matters; GPU tests compare them at sample pixels.
+//   accumulate_log_occlusion  ↔ shadow_gather.comp   f = Σ_i rot(O_log(s_i), d_i)
+//   exponentiate_and_shade    ↔ exponentiate.comp    O_p = HYB(f), E_direct = O_p · LH(N)
+//   accumulate_indirect       ↔ indirect.comp        E_ind = ξ_p Σ_i (a_i/π) κ_i (V_i · H(N))
+//   upsample                  ↔ upsample.comp        eq. 11 with the all-weights-vanish fallback
+//   tonemap                   ↔ composite.comp
+// Irradiance E = ∫ L max(N·s, 0) ds (not divided by π); the receiver's radiance is albedo/π · E.
+#include <span>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "render/frame_tables.h"
+
+namespace proxygi::render {
+
+struct Sphere {
+  glm::vec3 center{0.0f};  // world space, m
+  float radius = 0.0f;     // m
+  glm::vec3 albedo{0.0f};  // linear rgb
+};
+
+// Log occlusion at receiver (p, N) summed over every proxy (order = tables' order; n² floats).
+// Proxies with s ≤ 1/η_shadow contribute 0 through the faded table (the coverage oracle).
+std::vector<float> accumulate_log_occlusion(const FrameTables& tables, const glm::vec3& p, const glm::vec3& normal,
+                                            std::span<const Sphere> spheres);
+
+struct DirectResult {
+  glm::vec3 irradiance{0.0f};   // shadowed direct E, rgb
+  float occlusion_dc = 0.0f;    // (O_p)_0, the DC of the environment visibility
+  int squarings = 0;            // HYB squarings used
+};
+DirectResult exponentiate_and_shade(const FrameTables& tables, std::span<const float> log_occlusion, float tau,
+                                    const glm::vec3& normal);
+
+// LH(N) of one channel from the cube map, bilinear within the face that N hits (clamped at the
+// face edges). out holds n² values.
+void lookup_lighting_cube(const sh::LightingCubeMap& cube, const glm::vec3& normal, std::span<float> out);
+
+struct IndirectResult {
+  glm::vec3 irradiance{0.0f};   // normalized indirect E, rgb
+  float summed_solid_angle = 0; // ω_p (after the influence fade)
+};
+IndirectResult accumulate_indirect(const FrameTables& tables, const glm::vec3& p, const glm::vec3& normal,
+                                   std::span<const Sphere> spheres, float occlusion_dc);
+
+// The averaged indirect operator D(θ) of paper eq. 15 by its polynomial fit in α = sin θ.
+glm::vec3 averaged_operator(float sine);
+
+// Bilateral upsampling weights of paper eq. 11 for one display pixel from its 2×2 receivers.
+struct UpsampleTap {
+  glm::vec3 value{0.0f};
+  float depth = 0.0f;            // eye depth; 0 = no receiver there
+  glm::vec3 normal{0.0f, 1.0f, 0.0f};
+  float bilinear_weight = 0.0f;  // w^b
+};
+enum class UpsampleMode { bilateral = 0, bilinear = 1 };
+// Returns the interpolated value; when every weight vanishes (< 1e-6 of the bilinear total),
+// falls back to the valid tap with the closest depth.
+glm::vec3 upsample(std::span<const UpsampleTap, 4> taps, float depth, const glm::vec3& normal, UpsampleMode mode,
+                   float depth_epsilon);
+
+enum class Tonemap { aces = 0, reinhard = 1, clamp = 2 };
+// Linear radiance × exposure → display-referred linear [0, 1] (before the sRGB encoding).
+glm::vec3 tonemap(const glm::vec3& radiance, float exposure, Tonemap curve);
+
+}  // namespace proxygi::render

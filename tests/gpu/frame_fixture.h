@@ -1,0 +1,58 @@
+#pragma once
+// A small test scene for the soft-GI frame: a 20 m ground plane at y = 0, proxy spheres above it,
+// a camera looking down at the origin, and a constant white sky (radiance 1), so the closed form
+// E = π − π (r/d)² cos β holds for a sphere fully above a receiver's horizon.
+#include <memory>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "gpu/soft_gi_frame.h"
+#include "render/frame_tables.h"
+#include "sh/environment.h"
+
+namespace proxygi::gpu::testing {
+
+inline sh::RgbSh constant_sky_sh(int order, double radiance) {
+  sh::RgbSh sky;
+  sky.order = order;
+  for (auto& channel : sky.channels) {
+    channel.assign(std::size_t(order * order), 0.0);
+    channel[0] = radiance * 3.5449077018110318;  // projection of a constant: c · √4π
+  }
+  return sky;
+}
+
+inline FrameView look_at(const glm::vec3& eye, const glm::vec3& target, float fov_degrees, float aspect) {
+  FrameView view;
+  view.eye = eye;
+  view.forward = glm::normalize(target - eye);
+  view.view = glm::lookAtRH(eye, target, glm::vec3(0, 1, 0));
+  view.projection = glm::perspectiveRH_ZO(glm::radians(fov_degrees), aspect, 0.05f, 100.0f);
+  view.projection[1][1] *= -1.0f;  // Vulkan framebuffer y points down
+  return view;
+}
+
+struct GroundMesh {
+  std::vector<glm::vec3> positions, normals;
+  std::vector<std::uint32_t> indices;
+};
+
+// A grid so the plane has interior vertices (not needed for shading, but keeps depth precise).
+inline GroundMesh ground_plane(float size, int cells) {
+  GroundMesh mesh;
+  for (int z = 0; z <= cells; ++z)
+    for (int x = 0; x <= cells; ++x) {
+      mesh.positions.emplace_back(size * (float(x) / cells - 0.5f), 0.0f, size * (float(z) / cells - 0.5f));
+      mesh.normals.emplace_back(0.0f, 1.0f, 0.0f);
+    }
+  for (int z = 0; z < cells; ++z)
+    for (int x = 0; x < cells; ++x) {
+      const std::uint32_t i = std::uint32_t(z * (cells + 1) + x);
+      const std::uint32_t row = std::uint32_t(cells + 1);
+      mesh.indices.insert(mesh.indices.end(), {i, i + row, i + 1, i + 1, i + row, i + row + 1});
+    }
+  return mesh;
+}
+
+}  // namespace proxygi::gpu::testing
