@@ -1,5 +1,6 @@
 // Shared by the frame's compute passes: the frame constants, the tangent-plane rules and table
-// lookups. CPU twins: src/render/proxy_rules.cpp and src/render/shading.cpp (keep identical).
+// lookups. CPU twins: sh::proxy_at_receiver (src/sh/tangent_plane.h) and src/render/shading.cpp
+// (keep identical).
 #ifndef PROXYGI_FRAME_COMMON_GLSL
 #define PROXYGI_FRAME_COMMON_GLSL
 

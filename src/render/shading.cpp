@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/proxy_rules.h"
+#include "sh/indirect.h"
+#include "sh/tangent_plane.h"
 #include "sh/basis.h"
 
 namespace proxygi::render {
@@ -45,7 +46,7 @@ std::vector<float> accumulate_log_occlusion(const FrameTables& tables, const glm
   const float minimum_sine = 1.0f / tables.settings.eta_shadow;
   for (const Sphere& sphere : spheres) {
     if (outside_influence(p, sphere, tables.settings.eta_shadow)) continue;
-    const auto seen = proxy_seen_from(p, normal, sphere.center, sphere.radius);
+    const auto seen = sh::proxy_at_receiver(p, normal, {sphere.center, sphere.radius});
     if (!seen || seen->sine <= minimum_sine) continue;
     tables.log_occlusion.lookup(seen->sine, std::span<float>(zonal, std::size_t(order)));
     add_rotated(order, std::span<const float>(zonal, std::size_t(order)), seen->direction, f);
@@ -110,11 +111,6 @@ DirectResult exponentiate_and_shade(const FrameTables& tables, std::span<const f
   return result;
 }
 
-glm::vec3 averaged_operator(float sine) {
-  const float a = sine;
-  return {0.28209f, (0.08432f * a - 0.25073f) * a - 0.32494f, ((-0.22230f * a + 0.22502f) * a + 0.47398f) * a + 0.15950f};
-}
-
 IndirectResult accumulate_indirect(const FrameTables& tables, const glm::vec3& p, const glm::vec3& normal,
                                    std::span<const Sphere> spheres, float occlusion_dc) {
   IndirectResult result;
@@ -125,13 +121,14 @@ IndirectResult accumulate_indirect(const FrameTables& tables, const glm::vec3& p
   glm::vec3 summed(0.0f);
   for (const Sphere& sphere : spheres) {
     if (outside_influence(p, sphere, tables.settings.eta_indirect)) continue;
-    const auto seen = proxy_seen_from(p, normal, sphere.center, sphere.radius);
+    const auto seen = sh::proxy_at_receiver(p, normal, {sphere.center, sphere.radius});
     if (!seen || seen->sine <= minimum_sine) continue;
     float visibility[3];
     tables.proxy_visibility.lookup(seen->sine, std::span<float>(visibility, 3));
     float basis[9];
     sh::evaluate_basis(3, seen->direction, std::span<float>(basis, 9));
-    const glm::vec3 averaged = averaged_operator(seen->sine);
+    const auto fit = sh::averaged_indirect_polynomial(seen->sine);
+    const glm::vec3 averaged(float(fit[0]), float(fit[1]), float(fit[2]));
     // V_i · H(N) and κ_i = rot(D, d) · L̃, band by band.
     float seen_cosine = 0.0f;
     glm::vec3 kappa(0.0f);

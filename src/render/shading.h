@@ -46,9 +46,6 @@ struct IndirectResult {
 IndirectResult accumulate_indirect(const FrameTables& tables, const glm::vec3& p, const glm::vec3& normal,
                                    std::span<const Sphere> spheres, float occlusion_dc);
 
-// The averaged indirect operator D(θ) of paper eq. 15 by its polynomial fit in α = sin θ.
-glm::vec3 averaged_operator(float sine);
-
 // Bilateral upsampling weights of paper eq. 11 for one display pixel from its 2×2 receivers.
 struct UpsampleTap {
   glm::vec3 value{0.0f};
