@@ -210,7 +210,11 @@ Result<std::string> to_json(const Scene& scene) {
   j["render"] = render_json(scene.render);
   j["output"] = output_json(scene.output);
   std::string text;
-  print(j, 0, text);
+  try {
+    print(j, 0, text);
+  } catch (const nlohmann::json::exception&) {  // dump() refuses strings that are not UTF-8
+    return make_error("to_json: a string (description, model or path) is not valid UTF-8");
+  }
   return text + "\n";
 }
 

@@ -3,6 +3,7 @@
 //   PROXYGI_UPDATE_SCENE_ASSETS=1 build/<preset>/tests/scene/scene_tests --gtest_filter='*Committed*'
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -182,6 +183,49 @@ TEST(SceneFiles, WriterRefusesInvalidScenes) {
   Result<std::string> text = to_json(s);
   ASSERT_FALSE(text.ok());
   EXPECT_EQ(text.message(), "to_json: output.width: must be in 16..8192 (got 4)");
+}
+
+TEST(SceneFiles, WriterRefusesStringsThatAreNotUtf8) {
+  Scene s = default_scene();
+  s.description = "bad \xFF byte";
+  Result<std::string> text = to_json(s);
+  ASSERT_FALSE(text.ok());
+  EXPECT_EQ(text.message(), "to_json: a string (description, model or path) is not valid UTF-8");
+}
+
+// Damaged copies of a real scene file never crash the parser: each is accepted or refused
+// with a message naming the file (deterministic mutations: byte flips, truncation, deletions).
+TEST(SceneFiles, DamagedFilesAreRefusedCleanly) {
+  Result<std::string> original = to_json(crowd_scene());
+  ASSERT_TRUE(original.ok());
+  std::uint32_t state = 12345u;
+  auto next = [&state]() {  // xorshift32
+    state ^= state << 13;
+    state ^= state >> 17;
+    state ^= state << 5;
+    return state;
+  };
+  const char replacements[] = "{}[]\",:0123456789-.eE \\\x00\xFFtrufalsn";
+  int refused = 0;
+  for (int i = 0; i < 3000; ++i) {
+    std::string text = *original;
+    const int edits = 1 + int(next() % 3);
+    for (int e = 0; e < edits; ++e) {
+      const std::size_t at = next() % text.size();
+      switch (next() % 3) {
+        case 0: text[at] = replacements[next() % (sizeof(replacements) - 1)]; break;
+        case 1: text.resize(at); break;
+        default: text.erase(at, 1 + next() % 8); break;
+      }
+      if (text.empty()) break;
+    }
+    Result<Scene> scene = parse_scene(text, "fuzz.json");
+    if (!scene.ok()) {
+      ++refused;
+      EXPECT_EQ(scene.message().rfind("fuzz.json: ", 0), 0u) << scene.message();
+    }
+  }
+  EXPECT_GT(refused, 1000);  // most damage is caught
 }
 
 TEST(SceneFiles, SaveSceneWritesWhatLoadSceneReads) {
