@@ -128,7 +128,7 @@ IndirectResult accumulate_indirect(const FrameTables& tables, const glm::vec3& p
     float basis[9];
     sh::evaluate_basis(3, seen->direction, std::span<float>(basis, 9));
     const auto fit = sh::averaged_indirect_polynomial(seen->sine);
-    const glm::vec3 averaged(float(fit[0]), float(fit[1]), float(fit[2]));
+    const glm::vec3 averaged{float(fit[0]), float(fit[1]), float(fit[2])};
     // V_i · H(N) and κ_i = rot(D, d) · L̃, band by band.
     float seen_cosine = 0.0f;
     glm::vec3 kappa(0.0f);
