@@ -12,25 +12,35 @@ Plane channel_plane(const image::ImageF& image, int channel) {
   return plane;
 }
 
-Plane convolve_separable(const Plane& in, std::span<const double> kernel_x, std::span<const double> kernel_y) {
+std::vector<double> convolve_separable(std::span<const double> in, int width, int height,
+                                       std::span<const double> kernel_x, std::span<const double> kernel_y) {
   PROXYGI_CHECK(kernel_x.size() % 2 == 1 && kernel_y.size() % 2 == 1, "kernels have odd length");
+  PROXYGI_CHECK(in.size() == std::size_t(width) * std::size_t(height), "grid size matches");
   const int rx = int(kernel_x.size() / 2), ry = int(kernel_y.size() / 2);
-  const int w = in.width, h = in.height;
-  std::vector<double> rows(std::size_t(w) * std::size_t(h));
+  const int w = width, h = height;
+  auto index = [w](int x, int y) { return std::size_t(y) * std::size_t(w) + std::size_t(x); };
+  std::vector<double> rows(in.size());
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       double sum = 0.0;
-      for (int i = -rx; i <= rx; ++i) sum += kernel_x[std::size_t(i + rx)] * in.at(std::clamp(x + i, 0, w - 1), y);
-      rows[std::size_t(y) * std::size_t(w) + std::size_t(x)] = sum;
+      for (int i = -rx; i <= rx; ++i) sum += kernel_x[std::size_t(i + rx)] * in[index(std::clamp(x + i, 0, w - 1), y)];
+      rows[index(x, y)] = sum;
     }
-  Plane out(w, h);
+  std::vector<double> out(in.size());
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       double sum = 0.0;
-      for (int j = -ry; j <= ry; ++j)
-        sum += kernel_y[std::size_t(j + ry)] * rows[std::size_t(std::clamp(y + j, 0, h - 1)) * std::size_t(w) + std::size_t(x)];
-      out.at(x, y) = float(sum);
+      for (int j = -ry; j <= ry; ++j) sum += kernel_y[std::size_t(j + ry)] * rows[index(x, std::clamp(y + j, 0, h - 1))];
+      out[index(x, y)] = sum;
     }
+  return out;
+}
+
+Plane convolve_separable(const Plane& in, std::span<const double> kernel_x, std::span<const double> kernel_y) {
+  const std::vector<double> values(in.values.begin(), in.values.end());
+  const std::vector<double> filtered = convolve_separable(values, in.width, in.height, kernel_x, kernel_y);
+  Plane out(in.width, in.height);
+  for (std::size_t i = 0; i < filtered.size(); ++i) out.values[i] = float(filtered[i]);
   return out;
 }
 

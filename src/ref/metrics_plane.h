@@ -30,6 +30,9 @@ Plane channel_plane(const image::ImageF& image, int channel);
 // detectors have weights summing to 0 and take a square root of the response, so float rounding
 // on a flat image (~1e-8) would otherwise show up as a 1e-4 error.
 Plane convolve_separable(const Plane& in, std::span<const double> kernel_x, std::span<const double> kernel_y);
+// The same on a double-precision width x height grid (SSIM's moments: E[x^2] - E[x]^2 cancels).
+std::vector<double> convolve_separable(std::span<const double> in, int width, int height,
+                                       std::span<const double> kernel_x, std::span<const double> kernel_y);
 
 // Mean of `in` over the (2r+1)^2 window around each pixel, the window cut to the image (the mean
 // is over the pixels inside). O(width * height) whatever r: summed-area table in double.

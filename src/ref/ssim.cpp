@@ -24,18 +24,18 @@ std::array<double, 2 * kRadius + 1> gaussian_window() {
   return weights;
 }
 
-Plane display_channel(const image::ImageF& image, int channel, float exposure) {
-  Plane plane(image.width, image.height);
-  for (std::size_t i = 0; i < plane.values.size(); ++i) {
+std::vector<double> display_channel(const image::ImageF& image, int channel, float exposure) {
+  std::vector<double> values(image.pixels.size());
+  for (std::size_t i = 0; i < values.size(); ++i) {
     const float v = exposure * image.pixels[i][channel];
-    plane.values[i] = image::linear_to_srgb(v > 0.0f ? std::min(v, 1.0f) : 0.0f);  // NaN -> 0
+    values[i] = image::linear_to_srgb(v > 0.0f ? std::min(v, 1.0f) : 0.0f);  // NaN -> 0
   }
-  return plane;
+  return values;
 }
 
-Plane product(const Plane& a, const Plane& b) {
-  Plane out(a.width, a.height);
-  for (std::size_t i = 0; i < out.values.size(); ++i) out.values[i] = a.values[i] * b.values[i];
+std::vector<double> product(const std::vector<double>& a, const std::vector<double>& b) {
+  std::vector<double> out(a.size());
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = a[i] * b[i];
   return out;
 }
 
@@ -52,18 +52,17 @@ Result<MetricResult> ssim(const image::ImageF& test, const image::ImageF& refere
 
   Plane map(w, h);
   for (int c = 0; c < 3; ++c) {
-    const Plane x = display_channel(test, c, options.exposure);
-    const Plane y = display_channel(reference, c, options.exposure);
-    // Replicated borders never reach the pixels kept below (their windows are inside the image).
-    const Plane mu_x = convolve_separable(x, window, window);
-    const Plane mu_y = convolve_separable(y, window, window);
-    const Plane xx = convolve_separable(product(x, x), window, window);
-    const Plane yy = convolve_separable(product(y, y), window, window);
-    const Plane xy = convolve_separable(product(x, y), window, window);
+    const std::vector<double> x = display_channel(test, c, options.exposure);
+    const std::vector<double> y = display_channel(reference, c, options.exposure);
+    // Double precision: var = E[x^2] - E[x]^2 cancels, and float rounding of a small covariance
+    // would move SSIM by ~1e-5. Replicated borders never reach the pixels kept below.
+    auto blur = [&](const std::vector<double>& v) { return convolve_separable(v, w, h, window, window); };
+    const std::vector<double> mu_x = blur(x), mu_y = blur(y);
+    const std::vector<double> xx = blur(product(x, x)), yy = blur(product(y, y)), xy = blur(product(x, y));
     for (std::size_t i = 0; i < map.values.size(); ++i) {
-      const double mx = mu_x.values[i], my = mu_y.values[i];
-      const double var_x = xx.values[i] - mx * mx, var_y = yy.values[i] - my * my;
-      const double cov = xy.values[i] - mx * my;
+      const double mx = mu_x[i], my = mu_y[i];
+      const double var_x = xx[i] - mx * mx, var_y = yy[i] - my * my;
+      const double cov = xy[i] - mx * my;
       const double s = ((2.0 * mx * my + kC1) * (2.0 * cov + kC2)) / ((mx * mx + my * my + kC1) * (var_x + var_y + kC2));
       map.values[i] += float(s / 3.0);
     }

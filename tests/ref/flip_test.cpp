@@ -28,8 +28,8 @@ TEST(Flip, WhiteAgainstBlackByHand) {
   // so FLIP = 0.95 + (25.118864 - 16.510439) / (41.276098 - 16.510439) * 0.05 = 0.9673798.
   const auto result = flip_ldr(uniform(8, 8, 1.0f), uniform(8, 8, 0.0f));
   ASSERT_TRUE(result.ok()) << result.message();
-  EXPECT_NEAR(result->mean, 0.9673798, 1e-5);
-  EXPECT_NEAR(*std::min_element(result->map.values.begin(), result->map.values.end()), 0.9673798f, 1e-5f);
+  EXPECT_NEAR(result->mean, 0.9673798, 1e-6);
+  EXPECT_NEAR(*std::min_element(result->map.values.begin(), result->map.values.end()), 0.9673798f, 1e-6f);
 }
 
 TEST(Flip, CloseGraysByHand) {
@@ -37,7 +37,7 @@ TEST(Flip, CloseGraysByHand) {
   // 76.069261 - 72.891894 = 3.177367; ^0.7 = 2.246193 < 0.4 cmax, FLIP = 0.95 / 16.510439 * 2.246193.
   const auto result = flip_ldr(uniform(6, 6, 0.45f), uniform(6, 6, 0.5f));
   ASSERT_TRUE(result.ok()) << result.message();
-  EXPECT_NEAR(result->mean, 0.1292445, 1e-5);
+  EXPECT_NEAR(result->mean, 0.1292445, 1e-6);
 }
 
 // The pair metrics_reference.py builds in flip_pair(): a vertical color edge at x = 10 in the
@@ -61,15 +61,16 @@ TEST(Flip, MatchesIndependentNumpyComputation) {
   flip_pair(test, reference);
   const auto result = flip_ldr(test, reference);
   ASSERT_TRUE(result.ok()) << result.message();
-  // metrics_reference.py: full 2D kernels, direct sums, float64. The C++ filters in float32.
-  EXPECT_NEAR(result->mean, 0.147298523, 1e-4);
-  EXPECT_NEAR(result->map.at(10, 8), 0.346649199, 1e-4);
-  EXPECT_NEAR(result->map.at(3, 4), 0.053792677, 1e-4);
+  // metrics_reference.py: full 2D kernels, direct sums, float64. The C++ stores planes in float32
+  // (measured: mean within 3e-9, pixels within 9e-7).
+  EXPECT_NEAR(result->mean, 0.147298523, 1e-6);
+  EXPECT_NEAR(result->map.at(10, 8), 0.346649199, 5e-6);
+  EXPECT_NEAR(result->map.at(3, 4), 0.053792677, 5e-6);
   FlipOptions low;
   low.pixels_per_degree = 10.0;
   const auto coarse = flip_ldr(test, reference, nullptr, low);
   ASSERT_TRUE(coarse.ok());
-  EXPECT_NEAR(coarse->mean, 0.270477165, 1e-4);
+  EXPECT_NEAR(coarse->mean, 0.270477165, 1e-6);
 }
 
 TEST(Flip, MaskAveragesReceiversOnly) {
@@ -98,7 +99,7 @@ TEST(HdrFlip, MatchesIndependentNumpyComputation) {
   EXPECT_NEAR(result->start_exposure, 1.494227366, 1e-5);
   EXPECT_NEAR(result->stop_exposure, 3.645719476, 1e-5);
   EXPECT_EQ(result->exposure_count, 3);
-  EXPECT_NEAR(result->flip.mean, 0.251065255, 1e-4);
+  EXPECT_NEAR(result->flip.mean, 0.251065255, 1e-6);
 }
 
 TEST(HdrFlip, ToneMapperEndPoints) {
