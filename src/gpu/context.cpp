@@ -1,6 +1,7 @@
 #include "gpu/context.h"
 
 #include <cstdlib>
+#include <utility>
 
 #include "base/log.h"
 #include "gpu/device_query.h"
@@ -147,6 +148,67 @@ Status Context::submit_and_wait(const std::function<void(VkCommandBuffer)>& reco
   PROXYGI_VK_TRY(vkQueueSubmit(queue_, 1, &submit, cleanup.fence));
   PROXYGI_VK_TRY(vkWaitForFences(device_, 1, &cleanup.fence, VK_TRUE, UINT64_MAX));
   return {};
+}
+
+Result<Context::InFlight> Context::create_in_flight() {
+  InFlight slot;
+  slot.context_ = this;
+  VkCommandBufferAllocateInfo allocate{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  allocate.commandPool = command_pool_;
+  allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  allocate.commandBufferCount = 1;
+  PROXYGI_VK_TRY(vkAllocateCommandBuffers(device_, &allocate, &slot.commands_));
+  VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+  PROXYGI_VK_TRY(vkCreateFence(device_, &fence_info, nullptr, &slot.fence_));
+  return slot;
+}
+
+Status Context::InFlight::wait() {
+  if (!pending_) return {};
+  PROXYGI_VK_TRY(vkWaitForFences(context_->device_, 1, &fence_, VK_TRUE, UINT64_MAX));
+  PROXYGI_VK_TRY(vkResetFences(context_->device_, 1, &fence_));
+  pending_ = false;
+  return {};
+}
+
+Status Context::InFlight::submit(const std::function<void(VkCommandBuffer)>& record) {
+  if (Status waited = wait(); !waited) return waited;
+  PROXYGI_VK_TRY(vkResetCommandBuffer(commands_, 0));
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  PROXYGI_VK_TRY(vkBeginCommandBuffer(commands_, &begin));
+  record(commands_);
+  PROXYGI_VK_TRY(vkEndCommandBuffer(commands_));
+  VkSubmitInfo submit_info{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  submit_info.commandBufferCount = 1;
+  submit_info.pCommandBuffers = &commands_;
+  PROXYGI_VK_TRY(vkQueueSubmit(context_->queue_, 1, &submit_info, fence_));
+  pending_ = true;
+  return {};
+}
+
+void Context::InFlight::release() {
+  if (!context_) return;
+  if (pending_) vkWaitForFences(context_->device_, 1, &fence_, VK_TRUE, UINT64_MAX);
+  if (fence_ != VK_NULL_HANDLE) vkDestroyFence(context_->device_, fence_, nullptr);
+  if (commands_ != VK_NULL_HANDLE) vkFreeCommandBuffers(context_->device_, context_->command_pool_, 1, &commands_);
+  context_ = nullptr;
+  fence_ = VK_NULL_HANDLE;
+  commands_ = VK_NULL_HANDLE;
+  pending_ = false;
+}
+
+Context::InFlight::~InFlight() { release(); }
+Context::InFlight::InFlight(InFlight&& other) noexcept { *this = std::move(other); }
+Context::InFlight& Context::InFlight::operator=(InFlight&& other) noexcept {
+  if (this != &other) {
+    release();
+    context_ = std::exchange(other.context_, nullptr);
+    commands_ = std::exchange(other.commands_, VK_NULL_HANDLE);
+    fence_ = std::exchange(other.fence_, VK_NULL_HANDLE);
+    pending_ = std::exchange(other.pending_, false);
+  }
+  return *this;
 }
 
 Result<std::uint32_t> Context::find_memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags required) const {

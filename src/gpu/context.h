@@ -50,6 +50,30 @@ class Context {
   // Records into a fresh primary command buffer, submits it, and waits for the fence.
   Status submit_and_wait(const std::function<void(VkCommandBuffer)>& record);
 
+  // A command buffer and fence for work that runs while the CPU goes on (frames in flight).
+  class InFlight {
+   public:
+    InFlight() = default;
+    ~InFlight();
+    InFlight(InFlight&& other) noexcept;
+    InFlight& operator=(InFlight&& other) noexcept;
+    InFlight(const InFlight&) = delete;
+    InFlight& operator=(const InFlight&) = delete;
+    // Waits for the previous submission (if any), records into the reused command buffer, submits.
+    Status submit(const std::function<void(VkCommandBuffer)>& record);
+    Status wait();  // no-op when nothing is pending
+    bool pending() const { return pending_; }
+
+   private:
+    friend class Context;
+    void release();
+    Context* context_ = nullptr;
+    VkCommandBuffer commands_ = VK_NULL_HANDLE;
+    VkFence fence_ = VK_NULL_HANDLE;
+    bool pending_ = false;
+  };
+  Result<InFlight> create_in_flight();
+
   // Index of a memory type allowed by type_bits with all `required` flags.
   Result<std::uint32_t> find_memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags required) const;
 

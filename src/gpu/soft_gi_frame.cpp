@@ -20,19 +20,6 @@ Result<Buffer> storage(Context& context, VkDeviceSize bytes) {
   return Buffer::create(context, bytes, kStorage, MemoryKind::device_local);
 }
 
-// Every pass reads what the one before wrote: one conservative barrier between passes.
-void pass_barrier(VkCommandBuffer commands) {
-  VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-  barrier.srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-  barrier.srcAccessMask = VK_ACCESS_2_MEMORY_WRITE_BIT;
-  barrier.dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-  barrier.dstAccessMask = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT;
-  VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-  dependency.memoryBarrierCount = 1;
-  dependency.pMemoryBarriers = &barrier;
-  vkCmdPipelineBarrier2(commands, &dependency);
-}
-
 std::vector<glm::vec4> to_vec4(std::span<const glm::vec3> values, float w) {
   std::vector<glm::vec4> out;
   out.reserve(values.size());
@@ -156,6 +143,14 @@ Result<std::unique_ptr<SoftGiFrame>> SoftGiFrame::create(Context& context, const
     if (!proxies) return proxies.error();
     slot.constants = std::move(*constants);
     slot.proxies = std::move(*proxies);
+    auto ldr = Buffer::create(context, pixels * sizeof(std::uint32_t), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                              MemoryKind::host_visible);
+    auto hdr = Buffer::create(context, pixels * sizeof(glm::vec4), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                              MemoryKind::host_visible);
+    if (!ldr) return ldr.error();
+    if (!hdr) return hdr.error();
+    slot.ldr_readback = std::move(*ldr);
+    slot.hdr_readback = std::move(*hdr);
     frame->slots_.push_back(std::move(slot));
   }
   return frame;
@@ -198,6 +193,8 @@ void SoftGiFrame::record(VkCommandBuffer commands, std::uint32_t slot, std::span
   auto dispatch_2d = [&](std::uint32_t w, std::uint32_t h) {
     vkCmdDispatch(commands, group_count(w, gpu_layout::kFrameLocalSize), group_count(h, gpu_layout::kFrameLocalSize), 1);
   };
+
+  memory_barrier(commands);  // the previous frame on the queue may still read these targets
 
   // 2 G-buffer.
   context_.begin_label(commands, frame_pass_name(FramePass::gbuffer));
@@ -259,7 +256,7 @@ void SoftGiFrame::record(VkCommandBuffer commands, std::uint32_t slot, std::span
       .storage_buffer(3, receivers_)
       .push(context_, commands, pipelines_.receivers);
   dispatch_2d(receiver_width, receiver_height);
-  pass_barrier(commands);
+  memory_barrier(commands);
   context_.end_label(commands);
 
   // 4 shadow accumulation.
@@ -273,7 +270,7 @@ void SoftGiFrame::record(VkCommandBuffer commands, std::uint32_t slot, std::span
       .storage_buffer(4, log_occlusion_)
       .push(context_, commands, pipelines_.shadow);
   dispatch_2d(receiver_width, receiver_height);
-  pass_barrier(commands);
+  memory_barrier(commands);
   context_.end_label(commands);
 
   // 5 exponentiation and direct shading.
@@ -288,7 +285,7 @@ void SoftGiFrame::record(VkCommandBuffer commands, std::uint32_t slot, std::span
       .storage_buffer(5, direct_)
       .push(context_, commands, pipelines_.exponentiate);
   dispatch_2d(receiver_width, receiver_height);
-  pass_barrier(commands);
+  memory_barrier(commands);
   context_.end_label(commands);
 
   // 6 indirect.
@@ -303,7 +300,7 @@ void SoftGiFrame::record(VkCommandBuffer commands, std::uint32_t slot, std::span
       .storage_buffer(5, indirect_)
       .push(context_, commands, pipelines_.indirect);
   dispatch_2d(receiver_width, receiver_height);
-  pass_barrier(commands);
+  memory_barrier(commands);
   context_.end_label(commands);
 
   // 7 upsampling.
@@ -319,7 +316,7 @@ void SoftGiFrame::record(VkCommandBuffer commands, std::uint32_t slot, std::span
       .storage_buffer(6, irradiance_)
       .push(context_, commands, pipelines_.upsample);
   dispatch_2d(width, height);
-  pass_barrier(commands);
+  memory_barrier(commands);
   context_.end_label(commands);
 
   // 8 composite.
@@ -337,8 +334,31 @@ void SoftGiFrame::record(VkCommandBuffer commands, std::uint32_t slot, std::span
   const gpu_layout::CompositePush composite{environment_width_, environment_height_, 0, 0};
   pipelines_.composite.push_constants(commands, &composite, sizeof(composite));
   dispatch_2d(width, height);
-  pass_barrier(commands);
+  memory_barrier(commands);
+  const VkBufferCopy ldr_copy{0, 0, ldr_.size()}, hdr_copy{0, 0, hdr_.size()};
+  vkCmdCopyBuffer(commands, ldr_.handle(), current.ldr_readback.handle(), 1, &ldr_copy);
+  vkCmdCopyBuffer(commands, hdr_.handle(), current.hdr_readback.handle(), 1, &hdr_copy);
+  VkMemoryBarrier2 to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+  to_host.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
+  to_host.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+  to_host.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
+  to_host.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
+  VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+  dependency.memoryBarrierCount = 1;
+  dependency.pMemoryBarriers = &to_host;
+  vkCmdPipelineBarrier2(commands, &dependency);
   context_.end_label(commands);
+}
+
+std::span<const std::uint8_t> SoftGiFrame::slot_ldr(std::uint32_t slot) const {
+  const Buffer& buffer = slots_[slot].ldr_readback;
+  return {static_cast<const std::uint8_t*>(buffer.mapped()), std::size_t(buffer.size())};
+}
+
+image::ImageF SoftGiFrame::slot_hdr(std::uint32_t slot) const {
+  image::ImageF out{int(settings_.width), int(settings_.height)};
+  std::memcpy(out.pixels.data(), slots_[slot].hdr_readback.mapped(), out.pixels.size() * sizeof(glm::vec4));
+  return out;
 }
 
 Result<image::ImageF> SoftGiFrame::read_vec4_buffer(const Buffer& buffer, std::uint32_t width, std::uint32_t height) const {

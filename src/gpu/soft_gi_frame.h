@@ -76,7 +76,12 @@ class SoftGiFrame {
   const FrameSettings& settings() const { return settings_; }
   std::uint32_t slot_count() const { return static_cast<std::uint32_t>(slots_.size()); }
 
-  // Readback of the last recorded frame's results (call after its submit completed).
+  // The finished frame of `slot` (copied at the end of record(); valid once that submission
+  // completed, until the slot is recorded again): RGBA8 sRGB and linear radiance.
+  std::span<const std::uint8_t> slot_ldr(std::uint32_t slot) const;
+  image::ImageF slot_hdr(std::uint32_t slot) const;
+
+  // Readback of the last recorded frame's intermediate results (after its submit completed).
   Result<std::vector<std::uint8_t>> read_ldr() const;   // RGBA8 sRGB, width × height
   Result<image::ImageF> read_hdr() const;                // linear radiance
   Result<image::ImageF> read_irradiance() const;         // display res, upsampled E
@@ -91,8 +96,10 @@ class SoftGiFrame {
   Result<image::ImageF> read_vec4_buffer(const Buffer& buffer, std::uint32_t width, std::uint32_t height) const;
 
   struct Slot {
-    Buffer constants;  // FrameConstants, host-visible uniform
-    Buffer proxies;    // ProxySphere[kMaxProxies], host-visible uniform
+    Buffer constants;     // FrameConstants, host-visible uniform
+    Buffer proxies;       // ProxySphere[kMaxProxies], host-visible uniform
+    Buffer ldr_readback;  // host-visible copies of the slot's finished frame
+    Buffer hdr_readback;
   };
 
   Context& context_;

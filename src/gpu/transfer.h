@@ -28,6 +28,11 @@ Result<std::vector<std::uint8_t>> readback(Context& context, const Buffer& sourc
 // The image needs VK_IMAGE_USAGE_TRANSFER_SRC_BIT.
 Result<std::vector<std::uint8_t>> readback(Context& context, const Image& source, VkImageLayout layout);
 
+// A full memory barrier: every earlier command's writes (on this queue, in submission order)
+// become visible to every later command. The frame uses it between passes: simple and correct
+// everywhere, and on lavapipe it costs nothing measurable.
+void memory_barrier(VkCommandBuffer commands);
+
 // Records a layout transition of a whole image with a full (conservative) barrier.
 void transition(VkCommandBuffer commands, const Image& image, VkImageLayout from, VkImageLayout to);
 

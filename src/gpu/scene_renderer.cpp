@@ -1,0 +1,357 @@
+#include "gpu/scene_renderer.h"
+
+#include <cstring>
+#include <map>
+
+#include "anim/gltf_import.h"
+#include "anim/posed_character.h"
+#include "base/log.h"
+#include "gpu/transfer.h"
+#include "proxies/fit.h"
+#include "proxies/rig_file.h"
+#include "render/environment_lighting.h"
+#include "scene/camera.h"
+#include "scene/character_motion.h"
+
+namespace proxygi::gpu {
+
+// A model shared by every instance that uses it.
+struct SceneRenderer::Model {
+  std::filesystem::path file;
+  anim::Character character;
+  proxies::TrackingRig tracking;
+};
+
+// One mesh node of one instance: its primitives skinned by the node's skin, or (no skin) by a
+// one-joint palette holding the node's world matrix.
+struct MeshDraw {
+  int node = -1;
+  int skin = -1;
+  std::vector<SkinnedPrimitive> primitives;
+  std::vector<Buffer> indices;
+  std::vector<std::uint32_t> index_counts;
+  std::vector<glm::vec4> colors;
+  std::vector<Buffer> palettes;  // one per ring slot, host-visible
+};
+
+struct SceneRenderer::Instance {
+  const Model* model = nullptr;
+  std::size_t scene_character = 0;
+  int clip = -1;
+  anim::PoseBuffers pose;
+  std::vector<proxies::WorldSphere> spheres;
+  std::vector<MeshDraw> meshes;
+};
+
+namespace {
+
+glm::vec4 material_color(const anim::Character& character, int material) {
+  if (material < 0 || std::size_t(material) >= character.materials.size()) return glm::vec4(1.0f);
+  const anim::Material& m = character.materials[std::size_t(material)];
+  glm::vec4 color = m.base_color_factor;
+  // The G-buffer has no UVs: a textured material shows its texture's mean (linear) color.
+  if (m.base_color_image >= 0 && std::size_t(m.base_color_image) < character.images.size()) {
+    const anim::Image& image = character.images[std::size_t(m.base_color_image)];
+    glm::dvec3 sum(0.0);
+    const std::size_t texels = std::size_t(image.width) * std::size_t(image.height);
+    for (std::size_t i = 0; i < texels; ++i)
+      for (int c = 0; c < 3; ++c) sum[c] += image::srgb_to_linear(image.rgba[i * 4 + std::size_t(c)] / 255.0f);
+    if (texels > 0) color *= glm::vec4(glm::vec3(sum / double(texels)), 1.0f);
+  }
+  return color;
+}
+
+Result<anim::Character> load_model(const std::filesystem::path& file) {
+  auto character = anim::import_gltf(file);
+  if (!character) return character.error();
+  return std::move(*character);
+}
+
+// The cached rig when it belongs to this model file, else a fresh fit (cached when allowed).
+Result<proxies::ProxyRig> obtain_rig(const std::filesystem::path& model_file, const std::filesystem::path& rig_file,
+                                     const anim::Character& character, bool write_cache) {
+  auto hash = proxies::hash_file(model_file);
+  if (!hash) return hash.error();
+  std::error_code missing;
+  if (std::filesystem::exists(rig_file, missing)) {
+    auto rig = proxies::read_rig(rig_file, character);
+    if (!rig) return rig.error();  // a hand-edited rig with a mistake: report it, never overwrite
+    if (rig->model_hash == *hash) return std::move(*rig);
+    log_warning(rig_file.string() + ": fitted to another version of " + model_file.filename().string() + "; refitting");
+  }
+  proxies::FitResult fit;
+  proxies::FitProxiesJob job;
+  job.character = &character;
+  job.result = &fit;
+  if (Status fitted = job.run(); !fitted) return make_error(model_file.string() + ": proxy fit failed: " + fitted.message());
+  fit.rig.model = model_file.filename().string();
+  fit.rig.model_hash = *hash;
+  log_info("proxies: fitted " + std::to_string(fit.rig.spheres.size()) + " spheres to " + model_file.string() + " in " +
+           std::to_string(int(fit.seconds * 1000.0)) + " ms");
+  if (write_cache)
+    if (Status written = proxies::write_rig(rig_file, fit.rig, character); !written)
+      log_warning("proxies: could not cache the rig: " + written.message());
+  return std::move(fit.rig);
+}
+
+Result<int> resolve_clip(const anim::Character& character, const scene::ClipRef& clip) {
+  if (character.clips.empty()) return -1;  // rest pose
+  if (const auto* index = std::get_if<int>(&clip)) {
+    if (*index < 0 || std::size_t(*index) >= character.clips.size())
+      return make_error(character.source + ": clip index " + std::to_string(*index) + " out of range (" +
+                        std::to_string(character.clips.size()) + " clips)");
+    return *index;
+  }
+  return anim::find_clip(character, std::get<std::string>(clip));
+}
+
+render::FrameTableSettings table_settings(const scene::RenderSettings& render) {
+  render::FrameTableSettings settings;
+  settings.order = render.sh_order;
+  settings.eta_shadow = render.shadow_eta;
+  settings.eta_indirect = render.indirect_eta;
+  return settings;
+}
+
+FrameSettings frame_settings(const scene::Scene& scene) {
+  FrameSettings settings;
+  settings.width = std::uint32_t(scene.output.width);
+  settings.height = std::uint32_t(scene.output.height);
+  settings.receiver_scale = std::uint32_t(scene.render.receiver_scale);
+  settings.hybrid_tau = scene.render.hyb_tau;
+  settings.upsample = scene.render.upsampling == scene::Upsampling::bilinear ? render::UpsampleMode::bilinear
+                                                                              : render::UpsampleMode::bilateral;
+  settings.indirect = scene.render.indirect;
+  settings.tonemap = scene.render.tonemap == scene::Tonemap::reinhard ? render::Tonemap::reinhard
+                     : scene.render.tonemap == scene::Tonemap::clamp  ? render::Tonemap::clamp
+                                                                      : render::Tonemap::aces;
+  settings.exposure = std::exp2(scene.render.exposure_ev);
+  return settings;
+}
+
+void warn_unsupported(const scene::RenderSettings& render) {
+  if (render.indirect_operator != scene::IndirectOperator::averaged)
+    log_warning("render.indirect_operator: only 'averaged' runs on the GPU; using it");
+  if (render.exponential != scene::Exponential::hyb) log_warning("render.exponential: only 'hyb' runs on the GPU; using it");
+  if (render.splat != scene::SplatMethod::compute)
+    log_warning("render.splat: only the 'compute' gather runs on the GPU; using it");
+}
+
+}  // namespace
+
+SceneRenderer::SceneRenderer(Context& context) : context_(context) {}
+
+SceneRenderer::~SceneRenderer() {
+  for (auto& slot : in_flight_) (void)slot.wait();
+}
+
+std::size_t SceneRenderer::proxy_count() const {
+  std::size_t count = 0;
+  for (const auto& instance : instances_) count += instance->spheres.size();
+  return count;
+}
+
+Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Context& context, const scene::Scene& scene,
+                                                             const SceneRendererOptions& options) {
+  std::unique_ptr<SceneRenderer> renderer(new SceneRenderer(context));
+  renderer->scene_ = scene;
+  warn_unsupported(scene.render);
+  const FrameSettings settings = frame_settings(scene);
+  const std::uint32_t slots = std::max(settings.frames_in_flight, 1u);
+
+  auto skin_pass = SkinPass::create(context);
+  if (!skin_pass) return skin_pass.error();
+  renderer->skin_pass_ = std::make_unique<SkinPass>(std::move(*skin_pass));
+
+  std::map<std::filesystem::path, Model*> by_file;
+  for (std::size_t index = 0; index < scene.characters.size(); ++index) {
+    const scene::Character& entry = scene.characters[index];
+    const std::filesystem::path file = scene::resolve_model_path(scene, entry.model, options.assets_dir);
+    Model* model = nullptr;
+    if (auto found = by_file.find(file); found != by_file.end()) {
+      model = found->second;
+    } else {
+      auto loaded = load_model(file);
+      if (!loaded) return make_error("characters[" + std::to_string(index) + "]: " + loaded.message());
+      auto owned = std::make_unique<Model>();
+      owned->file = file;
+      owned->character = std::move(*loaded);
+      const auto rig_file = scene::resolve_proxy_path(scene, entry, options.assets_dir);
+      auto rig = obtain_rig(file, rig_file, owned->character, options.write_rig_cache);
+      if (!rig) return make_error("characters[" + std::to_string(index) + "]: " + rig.message());
+      auto tracking = proxies::compile_tracking(*rig, owned->character, rig->binding);
+      if (!tracking) return make_error(rig_file.string() + ": " + tracking.message());
+      owned->tracking = std::move(*tracking);
+      model = owned.get();
+      by_file[file] = model;
+      renderer->models_.push_back(std::move(owned));
+    }
+
+    auto instance = std::make_unique<Instance>();
+    instance->model = model;
+    instance->scene_character = index;
+    auto clip = resolve_clip(model->character, entry.clip);
+    if (!clip) return make_error("characters[" + std::to_string(index) + "].clip: " + clip.message());
+    instance->clip = *clip;
+    instance->spheres.resize(model->tracking.spheres.size());
+    const anim::Character& character = model->character;
+    for (std::size_t node = 0; node < character.nodes.size(); ++node) {
+      const anim::Node& n = character.nodes[node];
+      if (n.mesh < 0) continue;
+      MeshDraw draw;
+      draw.node = int(node);
+      draw.skin = n.skin;
+      const std::size_t palette_size = n.skin >= 0 ? character.skins[std::size_t(n.skin)].joints.size() : 1;
+      for (const anim::Primitive& source : character.meshes[std::size_t(n.mesh)].primitives) {
+        if (!source.morph_targets.empty())
+          log_warning(character.source + ": mesh " + std::to_string(n.mesh) + ": morph targets are not applied by the GPU renderer");
+        anim::Primitive primitive = source;
+        if (n.skin < 0 || primitive.influences_per_vertex < 1) {  // rigid: one joint, the node itself
+          primitive.influences_per_vertex = 1;
+          primitive.joints.assign(primitive.positions.size(), 0);
+          primitive.weights.assign(primitive.positions.size(), 1.0f);
+        }
+        auto uploaded = SkinPass::upload(context, primitive);
+        if (!uploaded) return uploaded.error();
+        auto indices = create_buffer_with_data(context, as_bytes(std::span<const std::uint32_t>(primitive.indices)),
+                                               VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+        if (!indices) return indices.error();
+        draw.primitives.push_back(std::move(*uploaded));
+        draw.indices.push_back(std::move(*indices));
+        draw.index_counts.push_back(std::uint32_t(primitive.indices.size()));
+        draw.colors.push_back(material_color(character, primitive.material));
+      }
+      for (std::uint32_t slot = 0; slot < slots; ++slot) {
+        auto palette = Buffer::create(context, palette_size * sizeof(glm::mat4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                      MemoryKind::host_visible);
+        if (!palette) return palette.error();
+        draw.palettes.push_back(std::move(*palette));
+      }
+      instance->meshes.push_back(std::move(draw));
+    }
+    renderer->instances_.push_back(std::move(instance));
+  }
+
+  if (scene.ground.enabled) {
+    const float half = 0.5f * scene.ground.size;
+    const glm::vec3 corners[] = {{-half, 0, -half}, {half, 0, -half}, {half, 0, half}, {-half, 0, half}};
+    const glm::vec3 up[] = {{0, 1, 0}, {0, 1, 0}, {0, 1, 0}, {0, 1, 0}};
+    const std::uint32_t quad[] = {0, 2, 1, 0, 3, 2};
+    auto ground = upload_static_mesh(context, corners, up, quad, glm::vec4(scene.ground.albedo, 1.0f));
+    if (!ground) return ground.error();
+    renderer->static_meshes_.push_back(std::move(*ground));
+  }
+  for (std::size_t index = 0; index < scene.static_meshes.size(); ++index) {
+    const scene::StaticMesh& entry = scene.static_meshes[index];
+    auto loaded = load_model(scene::resolve_scene_path(scene, entry.model));
+    if (!loaded) return make_error("static_meshes[" + std::to_string(index) + "]: " + loaded.message());
+    anim::PoseBuffers pose;
+    if (Status posed = anim::evaluate_pose(*loaded, -1, 0.0f, anim::WrapMode::clamp, pose, entry.transform.to_matrix()); !posed)
+      return posed.error();
+    auto primitives = anim::pose_meshes(*loaded, pose);
+    if (!primitives) return primitives.error();
+    for (const auto& primitive : *primitives) {
+      if (primitive.normals.size() != primitive.positions.size()) continue;
+      const glm::vec4 color = entry.albedo ? glm::vec4(*entry.albedo, 1.0f) : material_color(*loaded, primitive.material);
+      auto mesh = upload_static_mesh(context, primitive.positions, primitive.normals, primitive.indices, color);
+      if (!mesh) return mesh.error();
+      renderer->static_meshes_.push_back(std::move(*mesh));
+    }
+  }
+
+  auto lighting = render::make_environment_lighting(scene, scene.render.sh_order);
+  if (!lighting) return lighting.error();
+  const render::FrameTables tables = render::make_frame_tables(lighting->lighting, table_settings(scene.render));
+  auto frame = SoftGiFrame::create(context, settings, tables, lighting->background);
+  if (!frame) return frame.error();
+  renderer->frame_ = std::move(*frame);
+
+  for (std::uint32_t slot = 0; slot < slots; ++slot) {
+    auto in_flight = context.create_in_flight();
+    if (!in_flight) return in_flight.error();
+    renderer->in_flight_.push_back(std::move(*in_flight));
+  }
+  renderer->slot_frame_.assign(slots, -1);
+  renderer->slot_statistics_.assign(slots, {});
+  return renderer;
+}
+
+Status SceneRenderer::begin_frame(int frame) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::uint32_t slot = std::uint32_t(frame) % std::uint32_t(in_flight_.size());
+  if (slot_frame_[slot] >= 0)
+    return make_error("frame " + std::to_string(slot_frame_[slot]) + " still holds ring slot " + std::to_string(slot) +
+                      ": finish it before beginning frame " + std::to_string(frame));
+  const double t = scene::frame_time_s(scene_.output, frame);
+
+  spheres_.clear();
+  std::vector<DrawItem> draws;
+  for (auto& instance : instances_) {
+    const scene::Character& entry = scene_.characters[instance->scene_character];
+    const anim::Character& character = instance->model->character;
+    const float clip_time = float(scene::clip_time_s(entry, t));
+    if (Status posed = anim::evaluate_pose(character, instance->clip, clip_time, anim::WrapMode::loop, instance->pose,
+                                           scene::character_world_matrix(entry, t));
+        !posed)
+      return posed;
+    for (auto& mesh : instance->meshes) {
+      const std::vector<glm::mat4> rigid = {instance->pose.world[std::size_t(mesh.node)]};
+      const std::vector<glm::mat4>& palette =
+          mesh.skin >= 0 ? instance->pose.skin_matrices[std::size_t(mesh.skin)] : rigid;
+      std::memcpy(mesh.palettes[slot].mapped(), palette.data(), palette.size() * sizeof(glm::mat4));
+      for (std::size_t i = 0; i < mesh.primitives.size(); ++i)
+        draws.push_back({&mesh.primitives[i].world_positions, &mesh.primitives[i].world_normals, &mesh.indices[i],
+                         mesh.index_counts[i], mesh.colors[i]});
+    }
+    proxies::TrackProxiesJob track{&instance->model->tracking, instance->pose.world, instance->spheres};
+    if (Status tracked = track.run(); !tracked) return tracked;
+    for (const auto& sphere : instance->spheres) spheres_.push_back({sphere.center, sphere.radius, sphere.albedo});
+  }
+  for (const auto& mesh : static_meshes_) draws.push_back(mesh.draw());
+
+  const scene::CameraState camera = scene::evaluate_scene_camera(scene_, t);
+  const float aspect = float(scene_.output.width) / float(scene_.output.height);
+  FrameView view;
+  view.view = scene::view_matrix(camera);
+  view.projection = scene::projection_matrix(camera, aspect);
+  view.eye = camera.eye;
+  view.forward = glm::normalize(camera.target - camera.eye);
+  if (Status written = frame_->write_slot(slot, view, spheres_); !written) return written;
+
+  slot_statistics_[slot] = {};
+  slot_statistics_[slot].proxies = spheres_.size();
+  slot_statistics_[slot].cpu_prepare_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  Status submitted = in_flight_[slot].submit([&](VkCommandBuffer commands) {
+    memory_barrier(commands);  // the previous frame may still read the skinned vertices
+    for (const auto& instance : instances_)
+      for (const auto& mesh : instance->meshes)
+        for (const auto& primitive : mesh.primitives)
+          skin_pass_->record(context_, commands, primitive, mesh.palettes[slot], nullptr);
+    frame_->record(commands, slot, draws);
+  });
+  if (!submitted) return submitted;
+  slot_frame_[slot] = frame;
+  return {};
+}
+
+Result<FinishedFrame> SceneRenderer::finish_frame(int frame) {
+  const std::uint32_t slot = std::uint32_t(frame) % std::uint32_t(in_flight_.size());
+  if (slot_frame_[slot] != frame) return make_error("frame " + std::to_string(frame) + " was not begun");
+  if (Status waited = in_flight_[slot].wait(); !waited) return waited.error();
+  FinishedFrame finished;
+  finished.frame = frame;
+  const auto ldr = frame_->slot_ldr(slot);
+  finished.ldr.assign(ldr.begin(), ldr.end());
+  finished.hdr = frame_->slot_hdr(slot);
+  finished.statistics = slot_statistics_[slot];
+  slot_frame_[slot] = -1;
+  return finished;
+}
+
+Result<FinishedFrame> SceneRenderer::render(int frame) {
+  if (Status begun = begin_frame(frame); !begun) return begun.error();
+  return finish_frame(frame);
+}
+
+}  // namespace proxygi::gpu
