@@ -106,11 +106,12 @@ Keyframe gait_key(const std::array<glm::vec3, kJointCount>& p, const Gait& gait,
   return key;
 }
 
-Keyframe wave_key(const std::array<glm::vec3, kJointCount>&, float t) {
+Keyframe wave_key(const std::array<glm::vec3, kJointCount>& p, float t) {
   // Raise (0–0.5 s), wave twice (0.5–1.9 s), lower (1.9–2.4 s); the right arm is on −X.
   const float envelope = smoothstep(t / 0.5f) * (1.0f - smoothstep((t - 1.9f) / 0.5f));
   const float wave = std::sin(2.0f * kPi * (t - 0.5f) / 0.7f) * (t > 0.5f && t < 1.9f ? 1.0f : 0.0f);
   Keyframe key;
+  key.hips_translation = p[kHips] - p[kRoot];  // in place, hips at rest height
   key.rotation[kRightShoulder] = about_z(-0.15f * envelope);
   key.rotation[kRightUpperArm] = about_z(-2.0f * envelope);
   key.rotation[kRightLowerArm] = about_z(envelope * (-1.0f + 0.4f * wave));

@@ -26,6 +26,7 @@ void add_device_option(CLI::App& command, std::string& device);
 void add_devices_command(CLI::App& app, CommandRunner& runner);  // cmd_devices.cpp
 void add_info_command(CLI::App& app, CommandRunner& runner);     // cmd_info.cpp
 void add_pose_command(CLI::App& app, CommandRunner& runner);     // cmd_pose.cpp
+void add_mannequin_command(CLI::App& app, CommandRunner& runner);  // cmd_mannequin.cpp
 void add_fit_command(CLI::App& app, CommandRunner& runner);      // cmd_fit.cpp
 void add_compare_command(CLI::App& app, CommandRunner& runner);  // cmd_compare.cpp
 void add_bench_command(CLI::App& app, CommandRunner& runner);    // cmd_bench.cpp

@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
   add_devices_command(app, runner);
   add_info_command(app, runner);
   add_pose_command(app, runner);
+  add_mannequin_command(app, runner);
   add_fit_command(app, runner);
   add_compare_command(app, runner);
   add_bench_command(app, runner);
