@@ -145,8 +145,8 @@ Result<std::unique_ptr<SoftGiFrame>> SoftGiFrame::create(Context& context, const
     slot.proxies = std::move(*proxies);
     auto ldr = Buffer::create(context, pixels * sizeof(std::uint32_t), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                               MemoryKind::host_visible);
-    auto hdr = Buffer::create(context, pixels * sizeof(glm::vec4), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                              MemoryKind::host_visible);
+    auto hdr =
+        Buffer::create(context, pixels * sizeof(glm::vec4), VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryKind::host_visible);
     if (!ldr) return ldr.error();
     if (!hdr) return hdr.error();
     slot.ldr_readback = std::move(*ldr);
@@ -166,7 +166,8 @@ Status SoftGiFrame::write_slot(std::uint32_t slot, const FrameView& view, std::s
   constants.inverse_view_projection = glm::inverse(constants.view_projection);
   constants.eye_position = glm::vec4(view.eye, 1.0f);
   constants.eye_forward = glm::vec4(glm::normalize(view.forward), 0.0f);
-  constants.sizes = glm::uvec4(settings_.width, settings_.height, settings_.receiver_width(), settings_.receiver_height());
+  constants.sizes =
+      glm::uvec4(settings_.width, settings_.height, settings_.receiver_width(), settings_.receiver_height());
   constants.counts = glm::uvec4(std::uint32_t(spheres.size()), settings_.receiver_scale, std::uint32_t(order_),
                                 std::uint32_t(settings_.upsample));
   constants.shadow = glm::vec4(eta_shadow_, eta_indirect_, settings_.hybrid_tau, log_table_rows_);
@@ -175,7 +176,8 @@ Status SoftGiFrame::write_slot(std::uint32_t slot, const FrameView& view, std::s
                                       settings_.bilateral_depth_epsilon, settings_.indirect ? 1.0f : 0.0f);
   for (int channel = 0; channel < 3; ++channel)
     for (int i = 0; i < 9; ++i)
-      constants.irradiance_sh[channel * 9 + i] = glm::vec4(irradiance_order3_[std::size_t(channel)][std::size_t(i)], 0, 0, 0);
+      constants.irradiance_sh[channel * 9 + i] =
+          glm::vec4(irradiance_order3_[std::size_t(channel)][std::size_t(i)], 0, 0, 0);
   std::memcpy(slots_[slot].constants.mapped(), &constants, sizeof(constants));
 
   auto* proxies = static_cast<gpu_layout::ProxySphere*>(slots_[slot].proxies.mapped());
@@ -186,155 +188,177 @@ Status SoftGiFrame::write_slot(std::uint32_t slot, const FrameView& view, std::s
   return {};
 }
 
-void SoftGiFrame::record(VkCommandBuffer commands, std::uint32_t slot, std::span<const DrawItem> draws) const {
+void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot, FramePass pass,
+                              std::span<const DrawItem> draws) const {
   const Slot& current = slots_[slot];
   const std::uint32_t width = settings_.width, height = settings_.height;
   const std::uint32_t receiver_width = settings_.receiver_width(), receiver_height = settings_.receiver_height();
   auto dispatch_2d = [&](std::uint32_t w, std::uint32_t h) {
-    vkCmdDispatch(commands, group_count(w, gpu_layout::kFrameLocalSize), group_count(h, gpu_layout::kFrameLocalSize), 1);
+    vkCmdDispatch(commands, group_count(w, gpu_layout::kFrameLocalSize), group_count(h, gpu_layout::kFrameLocalSize),
+                  1);
   };
 
+  switch (pass) {
+    case FramePass::gbuffer: {
+      context_.begin_label(commands, frame_pass_name(FramePass::gbuffer));
+      for (const Image* image : {&position_depth_, &normal_, &albedo_})
+        transition(commands, *image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+      transition(commands, depth_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
+      VkRenderingAttachmentInfo colors[3];
+      const Image* color_images[3] = {&position_depth_, &normal_, &albedo_};
+      for (int i = 0; i < 3; ++i) {
+        colors[i] = VkRenderingAttachmentInfo{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+        colors[i].imageView = color_images[i]->view();
+        colors[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        colors[i].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+        colors[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        colors[i].clearValue.color = {{0.0f, 0.0f, 0.0f, 0.0f}};
+      }
+      VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+      depth.imageView = depth_.view();
+      depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+      depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+      depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+      depth.clearValue.depthStencil = {1.0f, 0};
+      VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+      rendering.renderArea = {{0, 0}, {width, height}};
+      rendering.layerCount = 1;
+      rendering.colorAttachmentCount = 3;
+      rendering.pColorAttachments = colors;
+      rendering.pDepthAttachment = &depth;
+      vkCmdBeginRendering(commands, &rendering);
+      const VkViewport viewport{0, 0, float(width), float(height), 0, 1};
+      const VkRect2D scissor{{0, 0}, {width, height}};
+      vkCmdSetViewport(commands, 0, 1, &viewport);
+      vkCmdSetScissor(commands, 0, 1, &scissor);
+      pipelines_.gbuffer.bind(commands);
+      for (const DrawItem& draw : draws) {
+        DescriptorPush()
+            .uniform_buffer(0, current.constants)
+            .storage_buffer(1, *draw.positions)
+            .storage_buffer(2, *draw.normals)
+            .push(context_, commands, pipelines_.gbuffer);
+        gpu_layout::GbufferPush push{};
+        push.base_color = draw.base_color;
+        pipelines_.gbuffer.push_constants(commands, &push, sizeof(push));
+        vkCmdBindIndexBuffer(commands, draw.indices->handle(), 0, VK_INDEX_TYPE_UINT32);
+        vkCmdDrawIndexed(commands, draw.index_count, 1, 0, 0, 0);
+      }
+      vkCmdEndRendering(commands);
+      for (const Image* image : {&position_depth_, &normal_, &albedo_})
+        transition(commands, *image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL);
+      context_.end_label(commands);
+      break;
+    }
+    case FramePass::receivers: {
+      context_.begin_label(commands, frame_pass_name(FramePass::receivers));
+      pipelines_.receivers.bind(commands);
+      DescriptorPush()
+          .uniform_buffer(0, current.constants)
+          .storage_image(1, position_depth_.view())
+          .storage_image(2, normal_.view())
+          .storage_buffer(3, receivers_)
+          .push(context_, commands, pipelines_.receivers);
+      dispatch_2d(receiver_width, receiver_height);
+      memory_barrier(commands);
+      context_.end_label(commands);
+      break;
+    }
+    case FramePass::shadow: {
+      context_.begin_label(commands, frame_pass_name(FramePass::shadow));
+      pipelines_.shadow.bind(commands);
+      DescriptorPush()
+          .uniform_buffer(0, current.constants)
+          .storage_buffer(1, receivers_)
+          .uniform_buffer(2, current.proxies)
+          .storage_buffer(3, log_table_)
+          .storage_buffer(4, log_occlusion_)
+          .push(context_, commands, pipelines_.shadow);
+      dispatch_2d(receiver_width, receiver_height);
+      memory_barrier(commands);
+      context_.end_label(commands);
+      break;
+    }
+    case FramePass::exponentiate: {
+      context_.begin_label(commands, frame_pass_name(FramePass::exponentiate));
+      pipelines_.exponentiate.bind(commands);
+      DescriptorPush()
+          .uniform_buffer(0, current.constants)
+          .storage_buffer(1, receivers_)
+          .storage_buffer(2, log_occlusion_)
+          .storage_buffer(3, optimal_linear_)
+          .storage_buffer(4, lighting_cube_)
+          .storage_buffer(5, direct_)
+          .push(context_, commands, pipelines_.exponentiate);
+      dispatch_2d(receiver_width, receiver_height);
+      memory_barrier(commands);
+      context_.end_label(commands);
+      break;
+    }
+    case FramePass::indirect: {
+      context_.begin_label(commands, frame_pass_name(FramePass::indirect));
+      pipelines_.indirect.bind(commands);
+      DescriptorPush()
+          .uniform_buffer(0, current.constants)
+          .storage_buffer(1, receivers_)
+          .uniform_buffer(2, current.proxies)
+          .storage_buffer(3, visibility_table_)
+          .storage_buffer(4, direct_)
+          .storage_buffer(5, indirect_)
+          .push(context_, commands, pipelines_.indirect);
+      dispatch_2d(receiver_width, receiver_height);
+      memory_barrier(commands);
+      context_.end_label(commands);
+      break;
+    }
+    case FramePass::upsample: {
+      context_.begin_label(commands, frame_pass_name(FramePass::upsample));
+      pipelines_.upsample.bind(commands);
+      DescriptorPush()
+          .uniform_buffer(0, current.constants)
+          .storage_image(1, position_depth_.view())
+          .storage_image(2, normal_.view())
+          .storage_buffer(3, receivers_)
+          .storage_buffer(4, direct_)
+          .storage_buffer(5, indirect_)
+          .storage_buffer(6, irradiance_)
+          .push(context_, commands, pipelines_.upsample);
+      dispatch_2d(width, height);
+      memory_barrier(commands);
+      context_.end_label(commands);
+      break;
+    }
+    case FramePass::composite: {
+      context_.begin_label(commands, frame_pass_name(FramePass::composite));
+      pipelines_.composite.bind(commands);
+      DescriptorPush()
+          .uniform_buffer(0, current.constants)
+          .storage_image(1, position_depth_.view())
+          .storage_image(2, albedo_.view())
+          .storage_buffer(3, irradiance_)
+          .storage_buffer(4, environment_)
+          .storage_buffer(5, hdr_)
+          .storage_buffer(6, ldr_)
+          .push(context_, commands, pipelines_.composite);
+      const gpu_layout::CompositePush composite{environment_width_, environment_height_, 0, 0};
+      pipelines_.composite.push_constants(commands, &composite, sizeof(composite));
+      dispatch_2d(width, height);
+      memory_barrier(commands);
+      context_.end_label(commands);
+      break;
+    }
+    case FramePass::skin:
+    case FramePass::count:
+      break;
+  }
+}
+
+void SoftGiFrame::record(VkCommandBuffer commands, std::uint32_t slot, std::span<const DrawItem> draws) const {
   memory_barrier(commands);  // the previous frame on the queue may still read these targets
-
-  // 2 G-buffer.
-  context_.begin_label(commands, frame_pass_name(FramePass::gbuffer));
-  for (const Image* image : {&position_depth_, &normal_, &albedo_})
-    transition(commands, *image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
-  transition(commands, depth_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
-  VkRenderingAttachmentInfo colors[3];
-  const Image* color_images[3] = {&position_depth_, &normal_, &albedo_};
-  for (int i = 0; i < 3; ++i) {
-    colors[i] = VkRenderingAttachmentInfo{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    colors[i].imageView = color_images[i]->view();
-    colors[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    colors[i].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    colors[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    colors[i].clearValue.color = {{0.0f, 0.0f, 0.0f, 0.0f}};
-  }
-  VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-  depth.imageView = depth_.view();
-  depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-  depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  depth.clearValue.depthStencil = {1.0f, 0};
-  VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-  rendering.renderArea = {{0, 0}, {width, height}};
-  rendering.layerCount = 1;
-  rendering.colorAttachmentCount = 3;
-  rendering.pColorAttachments = colors;
-  rendering.pDepthAttachment = &depth;
-  vkCmdBeginRendering(commands, &rendering);
-  const VkViewport viewport{0, 0, float(width), float(height), 0, 1};
-  const VkRect2D scissor{{0, 0}, {width, height}};
-  vkCmdSetViewport(commands, 0, 1, &viewport);
-  vkCmdSetScissor(commands, 0, 1, &scissor);
-  pipelines_.gbuffer.bind(commands);
-  for (const DrawItem& draw : draws) {
-    DescriptorPush()
-        .uniform_buffer(0, current.constants)
-        .storage_buffer(1, *draw.positions)
-        .storage_buffer(2, *draw.normals)
-        .push(context_, commands, pipelines_.gbuffer);
-    gpu_layout::GbufferPush push{};
-    push.base_color = draw.base_color;
-    pipelines_.gbuffer.push_constants(commands, &push, sizeof(push));
-    vkCmdBindIndexBuffer(commands, draw.indices->handle(), 0, VK_INDEX_TYPE_UINT32);
-    vkCmdDrawIndexed(commands, draw.index_count, 1, 0, 0, 0);
-  }
-  vkCmdEndRendering(commands);
-  for (const Image* image : {&position_depth_, &normal_, &albedo_})
-    transition(commands, *image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL);
-  context_.end_label(commands);
-
-  // 3 receivers.
-  context_.begin_label(commands, frame_pass_name(FramePass::receivers));
-  pipelines_.receivers.bind(commands);
-  DescriptorPush()
-      .uniform_buffer(0, current.constants)
-      .storage_image(1, position_depth_.view())
-      .storage_image(2, normal_.view())
-      .storage_buffer(3, receivers_)
-      .push(context_, commands, pipelines_.receivers);
-  dispatch_2d(receiver_width, receiver_height);
-  memory_barrier(commands);
-  context_.end_label(commands);
-
-  // 4 shadow accumulation.
-  context_.begin_label(commands, frame_pass_name(FramePass::shadow));
-  pipelines_.shadow.bind(commands);
-  DescriptorPush()
-      .uniform_buffer(0, current.constants)
-      .storage_buffer(1, receivers_)
-      .uniform_buffer(2, current.proxies)
-      .storage_buffer(3, log_table_)
-      .storage_buffer(4, log_occlusion_)
-      .push(context_, commands, pipelines_.shadow);
-  dispatch_2d(receiver_width, receiver_height);
-  memory_barrier(commands);
-  context_.end_label(commands);
-
-  // 5 exponentiation and direct shading.
-  context_.begin_label(commands, frame_pass_name(FramePass::exponentiate));
-  pipelines_.exponentiate.bind(commands);
-  DescriptorPush()
-      .uniform_buffer(0, current.constants)
-      .storage_buffer(1, receivers_)
-      .storage_buffer(2, log_occlusion_)
-      .storage_buffer(3, optimal_linear_)
-      .storage_buffer(4, lighting_cube_)
-      .storage_buffer(5, direct_)
-      .push(context_, commands, pipelines_.exponentiate);
-  dispatch_2d(receiver_width, receiver_height);
-  memory_barrier(commands);
-  context_.end_label(commands);
-
-  // 6 indirect.
-  context_.begin_label(commands, frame_pass_name(FramePass::indirect));
-  pipelines_.indirect.bind(commands);
-  DescriptorPush()
-      .uniform_buffer(0, current.constants)
-      .storage_buffer(1, receivers_)
-      .uniform_buffer(2, current.proxies)
-      .storage_buffer(3, visibility_table_)
-      .storage_buffer(4, direct_)
-      .storage_buffer(5, indirect_)
-      .push(context_, commands, pipelines_.indirect);
-  dispatch_2d(receiver_width, receiver_height);
-  memory_barrier(commands);
-  context_.end_label(commands);
-
-  // 7 upsampling.
-  context_.begin_label(commands, frame_pass_name(FramePass::upsample));
-  pipelines_.upsample.bind(commands);
-  DescriptorPush()
-      .uniform_buffer(0, current.constants)
-      .storage_image(1, position_depth_.view())
-      .storage_image(2, normal_.view())
-      .storage_buffer(3, receivers_)
-      .storage_buffer(4, direct_)
-      .storage_buffer(5, indirect_)
-      .storage_buffer(6, irradiance_)
-      .push(context_, commands, pipelines_.upsample);
-  dispatch_2d(width, height);
-  memory_barrier(commands);
-  context_.end_label(commands);
-
-  // 8 composite.
-  context_.begin_label(commands, frame_pass_name(FramePass::composite));
-  pipelines_.composite.bind(commands);
-  DescriptorPush()
-      .uniform_buffer(0, current.constants)
-      .storage_image(1, position_depth_.view())
-      .storage_image(2, albedo_.view())
-      .storage_buffer(3, irradiance_)
-      .storage_buffer(4, environment_)
-      .storage_buffer(5, hdr_)
-      .storage_buffer(6, ldr_)
-      .push(context_, commands, pipelines_.composite);
-  const gpu_layout::CompositePush composite{environment_width_, environment_height_, 0, 0};
-  pipelines_.composite.push_constants(commands, &composite, sizeof(composite));
-  dispatch_2d(width, height);
-  memory_barrier(commands);
+  for (FramePass pass : {FramePass::gbuffer, FramePass::receivers, FramePass::shadow, FramePass::exponentiate,
+                         FramePass::indirect, FramePass::upsample, FramePass::composite})
+    record_pass(commands, slot, pass, draws);
+  const Slot& current = slots_[slot];
   const VkBufferCopy ldr_copy{0, 0, ldr_.size()}, hdr_copy{0, 0, hdr_.size()};
   vkCmdCopyBuffer(commands, ldr_.handle(), current.ldr_readback.handle(), 1, &ldr_copy);
   vkCmdCopyBuffer(commands, hdr_.handle(), current.hdr_readback.handle(), 1, &hdr_copy);
@@ -347,7 +371,6 @@ void SoftGiFrame::record(VkCommandBuffer commands, std::uint32_t slot, std::span
   dependency.memoryBarrierCount = 1;
   dependency.pMemoryBarriers = &to_host;
   vkCmdPipelineBarrier2(commands, &dependency);
-  context_.end_label(commands);
 }
 
 std::span<const std::uint8_t> SoftGiFrame::slot_ldr(std::uint32_t slot) const {
@@ -361,7 +384,8 @@ image::ImageF SoftGiFrame::slot_hdr(std::uint32_t slot) const {
   return out;
 }
 
-Result<image::ImageF> SoftGiFrame::read_vec4_buffer(const Buffer& buffer, std::uint32_t width, std::uint32_t height) const {
+Result<image::ImageF> SoftGiFrame::read_vec4_buffer(const Buffer& buffer, std::uint32_t width,
+                                                    std::uint32_t height) const {
   auto bytes = readback(context_, buffer);
   if (!bytes) return bytes.error();
   image::ImageF out{int(width), int(height)};
@@ -370,7 +394,9 @@ Result<image::ImageF> SoftGiFrame::read_vec4_buffer(const Buffer& buffer, std::u
 }
 
 Result<std::vector<std::uint8_t>> SoftGiFrame::read_ldr() const { return readback(context_, ldr_); }
-Result<image::ImageF> SoftGiFrame::read_hdr() const { return read_vec4_buffer(hdr_, settings_.width, settings_.height); }
+Result<image::ImageF> SoftGiFrame::read_hdr() const {
+  return read_vec4_buffer(hdr_, settings_.width, settings_.height);
+}
 Result<image::ImageF> SoftGiFrame::read_irradiance() const {
   return read_vec4_buffer(irradiance_, settings_.width, settings_.height);
 }

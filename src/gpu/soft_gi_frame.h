@@ -70,8 +70,13 @@ class SoftGiFrame {
   // than kMaxProxies spheres.
   Status write_slot(std::uint32_t slot, const FrameView& view, std::span<const render::Sphere> spheres);
 
-  // Records steps 2–8 for the frame written in `slot`, drawing `draws` into the G-buffer.
+  // Records steps 2–8 for the frame written in `slot`, drawing `draws` into the G-buffer, and
+  // copies the results into the slot's readback buffers.
   void record(VkCommandBuffer commands, std::uint32_t slot, std::span<const DrawItem> draws) const;
+  // Records one pass (gbuffer .. composite) followed by a memory barrier; the passes in order
+  // equal record() without the readback copies. The benchmark submits them one by one to time
+  // each with the CPU clock (lavapipe's timestamps are unreliable, rendering-notes §4.2).
+  void record_pass(VkCommandBuffer commands, std::uint32_t slot, FramePass pass, std::span<const DrawItem> draws) const;
 
   const FrameSettings& settings() const { return settings_; }
   std::uint32_t slot_count() const { return static_cast<std::uint32_t>(slots_.size()); }
