@@ -1,12 +1,144 @@
-// proxygi fit: placeholder until its issue lands.
+// proxygi fit MODEL [-o FILE.proxies.json] [--tolerance T] [--max-spheres N] [--json] [--force]
+// Fits sphere proxies per bone (or reuses MODEL.proxies.json while the model's content hash,
+// tolerance and sphere cap match), measures their quality, picks the better binding over every
+// frame of every clip, and writes the rig atomically.
+#include <cstdio>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "anim/gltf_import.h"
+#include "anim/mannequin.h"
 #include "apps/commands.h"
+#include "proxies/binding_eval.h"
+#include "proxies/fit.h"
+#include "proxies/quality.h"
+#include "proxies/rig_file.h"
 
 namespace proxygi::app {
+namespace {
+
+struct FitArgs {
+  std::string model;
+  std::string output;
+  float tolerance = proxies::FitOptions{}.tolerance;
+  int max_spheres = proxies::FitOptions{}.max_spheres;
+  bool json = false;
+  bool force = false;
+};
+
+nlohmann::json report_json(const proxies::ProxyRig& rig, const std::string& model, const std::string& rig_path, bool cached) {
+  const proxies::RigSummary summary = proxies::summarize_rig(rig);
+  nlohmann::json bones = nlohmann::json::object();
+  for (const auto& [bone, count] : summary.spheres_per_bone) bones[bone] = count;
+  return {{"model", model},
+          {"rig", rig_path},
+          {"cache", cached ? "hit" : "miss"},
+          {"model_hash", rig.model_hash},
+          {"sphere_count", summary.sphere_count},
+          {"tolerance", rig.tolerance},
+          {"tolerance_m", rig.tolerance * rig.diagonal},
+          {"diagonal_m", rig.diagonal},
+          {"max_spheres", rig.max_spheres},
+          {"fit_seconds", rig.fit_seconds},
+          {"coverage", rig.quality.coverage},
+          {"outside_volume_ratio", rig.quality.outside_volume_ratio},
+          {"hausdorff_surface_to_spheres_m", rig.quality.hausdorff_surface_to_spheres},
+          {"hausdorff_spheres_to_surface_m", rig.quality.hausdorff_spheres_to_surface},
+          {"mean_surface_to_spheres_m", rig.quality.mean_surface_to_spheres},
+          {"binding", proxies::binding_name(rig.binding)},
+          {"tracking",
+           {{"frames", rig.frames_evaluated},
+            {"rigid_worst_poke_out_m", rig.rigid_error.worst_poke_out},
+            {"rigid_mean_poke_out_m", rig.rigid_error.mean_poke_out},
+            {"blended_worst_poke_out_m", rig.blended_error.worst_poke_out},
+            {"blended_mean_poke_out_m", rig.blended_error.mean_poke_out}}},
+          {"warnings", rig.warnings},
+          {"spheres_per_bone", bones}};
+}
+
+void print_text(const proxies::ProxyRig& rig, const std::string& rig_path, bool cached) {
+  std::printf("%s %s\n", cached ? "reused" : "wrote", rig_path.c_str());
+  std::printf("%s", proxies::format_rig_summary(rig).c_str());
+  std::printf("  tracking over %d frames: worst poke-out rigid %.4g m, blended %.4g m (mean %.4g / %.4g m)\n",
+              rig.frames_evaluated, double(rig.rigid_error.worst_poke_out), double(rig.blended_error.worst_poke_out),
+              double(rig.rigid_error.mean_poke_out), double(rig.blended_error.mean_poke_out));
+  std::printf("  fit time %.3f s\n", rig.fit_seconds);
+  for (const std::string& w : rig.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+}
+
+int run_fit(const FitArgs& args) {
+  // The built-in mannequin by name, else a glTF file.
+  const bool builtin = args.model == "mannequin" && !std::filesystem::exists(args.model);
+  anim::Character character;
+  std::string hash;
+  if (builtin) {
+    character = anim::build_mannequin();
+    hash = "builtin:mannequin";
+  } else {
+    Result<anim::Character> imported = anim::import_gltf(args.model);
+    if (!imported) return fail_bad_input(imported.message());
+    character = std::move(imported.value());
+    Result<std::string> h = proxies::hash_file(args.model);
+    if (!h) return fail_bad_input(h.message());
+    hash = *h;
+  }
+  const std::filesystem::path rig_path = !args.output.empty() ? std::filesystem::path(args.output)
+                                         : builtin ? std::filesystem::path("mannequin.proxies.json")
+                                                   : proxies::default_rig_path(args.model);
+
+  if (!args.force && std::filesystem::exists(rig_path)) {
+    Result<proxies::ProxyRig> cached = proxies::read_rig(rig_path, character);
+    if (!cached) return fail_bad_input(cached.message() + " (fix the file or pass --force to refit)");
+    if (cached->model_hash == hash && cached->tolerance == args.tolerance && cached->max_spheres == args.max_spheres) {
+      if (args.json) std::printf("%s\n", report_json(*cached, args.model, rig_path.string(), true).dump(2).c_str());
+      else print_text(*cached, rig_path.string(), true);
+      return kExitOk;
+    }
+  }
+
+  proxies::FitResult fit;
+  proxies::FitProxiesJob job;
+  job.character = &character;
+  job.options.tolerance = args.tolerance;
+  job.options.max_spheres = args.max_spheres;
+  job.result = &fit;
+  if (Status s = job.validate(); !s) return fail_bad_input(s.message());
+  if (Status s = job.run(); !s) return fail_bad_input(s.message());
+  proxies::ProxyRig& rig = fit.rig;
+  rig.model = builtin ? "mannequin" : std::filesystem::path(args.model).filename().string();
+  rig.model_hash = hash;
+
+  std::vector<glm::vec4> spheres;
+  for (const proxies::FittedSphere& f : fit.fitted) spheres.emplace_back(f.center, f.radius);
+  rig.quality = proxies::measure_quality(character, fit.surface, spheres, fit.tolerance_m);
+  rig.has_quality = true;
+  Result<proxies::BindingEvaluation> tracking = proxies::evaluate_bindings(character, fit);
+  if (!tracking) return fail_runtime(tracking.message());
+  rig.frames_evaluated = tracking->frames;
+  rig.rigid_error = tracking->rigid;
+  rig.blended_error = tracking->blended;
+  rig.binding = tracking->better;
+
+  if (Status s = proxies::write_rig(rig_path, rig, character); !s) return fail_runtime(s.message());
+  if (args.json) std::printf("%s\n", report_json(rig, args.model, rig_path.string(), false).dump(2).c_str());
+  else print_text(rig, rig_path.string(), false);
+  return kExitOk;
+}
+
+}  // namespace
 
 void add_fit_command(CLI::App& app, CommandRunner& runner) {
+  auto args = std::make_shared<FitArgs>();
   auto* command = app.add_subcommand("fit", "Fit sphere proxies to each bone of a model");
-  command->allow_extras();
-  command->callback([&runner] { runner = [] { return fail_runtime("fit: not implemented yet"); }; });
+  command->add_option("model", args->model, "glTF/GLB file, or 'mannequin' for the built-in character")->required();
+  command->add_option("-o,--output", args->output, "rig file (default: MODEL.proxies.json next to the model)");
+  command->add_option("--tolerance", args->tolerance, "allowed protrusion, relative to the bounding-box diagonal")
+      ->check(CLI::PositiveNumber);
+  command->add_option("--max-spheres", args->max_spheres, "cap on the sphere count")->check(CLI::PositiveNumber);
+  command->add_flag("--json", args->json, "print the report as JSON on stdout");
+  command->add_flag("--force", args->force, "refit even when the cached rig matches");
+  command->callback([&runner, args] { runner = [args] { return run_fit(*args); }; });
 }
 
 }  // namespace proxygi::app
