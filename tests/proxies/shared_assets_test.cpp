@@ -1,0 +1,44 @@
+// Fitting the shared sample characters: sphere counts in the humanoid range, full coverage,
+// bounded protrusion, and a rig file that round-trips. Skipped when the assets are absent.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "anim/gltf_import.h"
+#include "proxies/binding_eval.h"
+#include "proxies/fit.h"
+#include "proxies/quality.h"
+#include "proxies/rig_file.h"
+
+namespace proxygi::proxies {
+namespace {
+
+TEST(SharedAssets, CesiumManFitsWithTheDefaultTolerance) {
+  const std::filesystem::path path = PROXYGI_SHARED_ASSETS_DIR "/gltf/CesiumMan.glb";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "missing " << path;
+  Result<anim::Character> ch = anim::import_gltf(path);
+  ASSERT_TRUE(ch.ok()) << ch.message();
+  FitResult fit;
+  FitProxiesJob job;
+  job.character = &*ch;
+  job.result = &fit;
+  ASSERT_TRUE(job.run().ok());
+  EXPECT_GE(fit.rig.spheres.size(), 15u);
+  EXPECT_LE(fit.rig.spheres.size(), 40u);
+  std::vector<glm::vec4> spheres;
+  for (const FittedSphere& f : fit.fitted) spheres.emplace_back(f.center, f.radius);
+  const FitQuality q = measure_quality(*ch, fit.surface, spheres, fit.tolerance_m);
+  EXPECT_GE(q.coverage, 0.999f);
+  // The grid the fit measures protrusion on is diagonal / 100; exact distances may exceed the
+  // tolerance by up to half a cell.
+  EXPECT_LE(q.hausdorff_spheres_to_surface, fit.tolerance_m + 0.5f * fit.diagonal / 100.0f);
+  Result<BindingEvaluation> eval = evaluate_bindings(*ch, fit);
+  ASSERT_TRUE(eval.ok()) << eval.message();
+  EXPECT_GT(eval->frames, 1);
+  Result<ProxyRig> back = parse_rig(rig_to_json(fit.rig, *ch), "CesiumMan.proxies.json", *ch);
+  ASSERT_TRUE(back.ok()) << back.message();
+  EXPECT_EQ(back->spheres.size(), fit.rig.spheres.size());
+}
+
+}  // namespace
+}  // namespace proxygi::proxies
