@@ -1,0 +1,94 @@
+#pragma once
+// Rendering a reference image: the path tracer run over every pixel, on all cores, with
+// deterministic output.
+//
+// Per pixel (x, y) (framebuffer convention of scene/camera.h: y down, centers at +0.5), sample
+// index s in [first_sample, first_sample + spp): SampleStream(seed, y * width + x, s); the first
+// two numbers jitter the camera position uniformly inside the pixel, (x + u0, y + u1), the ray is
+// scene::ray_through_pixel at that position, the rest drive the path. Pixels are computed by one
+// thread each, samples summed in index order, so the image does not depend on the thread count
+// or the tile order.
+//
+// Accumulation keeps double sums per pixel (radiance, radiance², indirect), so runs over
+// disjoint sample ranges merge exactly into the mean of all samples (resume, shards).
+//
+// Features come from the noise-free primary ray through the pixel center (as the rasterizer's
+// G-buffer, no anti-aliasing): coverage mask, albedo, shading normal facing the camera (world
+// space) and eye depth (distance along the camera's forward axis, meters; the rasterizer's
+// definition).
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "base/result.h"
+#include "image/image.h"
+#include "ref/path_tracer.h"
+#include "scene/camera.h"
+
+namespace proxygi::ref {
+
+struct RenderJob {
+  int width = 256;
+  int height = 256;
+  int spp = 16;                 // samples per pixel traced by this job (>= 1)
+  std::uint32_t first_sample = 0;  // index of the first sample (resume: the samples already done)
+  std::uint32_t seed = 0;
+  int threads = 0;              // 0: std::thread::hardware_concurrency()
+  int tile_size = 16;           // pixels per tile edge
+};
+
+// Per-pixel double sums of a range of samples.
+struct SampleSums {
+  int width = 0;
+  int height = 0;
+  std::uint32_t samples = 0;  // per pixel
+  std::vector<glm::dvec3> radiance;
+  std::vector<glm::dvec3> radiance_squared;
+  std::vector<glm::dvec3> indirect;
+
+  // Sums of both (disjoint sample ranges of the same image). Fails when sizes differ.
+  Status merge(const SampleSums& other);
+};
+
+struct PixelFeatures {
+  image::ImageF mask;    // rgb = a = 1 where the center ray hits geometry, else 0 (a = 1)
+  image::ImageF albedo;  // rgb albedo, a = mask
+  image::ImageF normal;  // rgb unit world normal facing the camera, a = mask
+  image::ImageF depth;   // rgb = eye depth in meters (0 where no hit), a = mask
+};
+
+struct RenderProgress {
+  int tiles_done = 0;
+  int tiles_total = 0;
+  double elapsed_s = 0.0;
+  double eta_s = 0.0;       // linear extrapolation from the tiles done
+  std::uint64_t rays = 0;   // traced so far
+};
+using ProgressCallback = std::function<void(const RenderProgress&)>;
+
+struct RenderStats {
+  std::uint64_t rays = 0;
+  double seconds = 0.0;
+  double mrays_per_second() const { return seconds > 0.0 ? double(rays) / seconds * 1e-6 : 0.0; }
+};
+
+// Traces job.spp samples per pixel. `progress` (optional) is called from the calling thread
+// about every `progress_interval_s` and once at the end. Fails on an invalid job.
+Result<SampleSums> render_samples(const PathTracer& tracer, const scene::CameraState& camera, const RenderJob& job,
+                                  RenderStats* stats = nullptr, const ProgressCallback& progress = {},
+                                  double progress_interval_s = 1.0);
+
+PixelFeatures render_features(const EmbreeScene& scene, const scene::CameraState& camera, int width, int height);
+
+struct ReferenceImages {
+  image::ImageF radiance;  // mean radiance, rgb; a = 1
+  image::ImageF indirect;  // mean of the indirect part, rgb; a = 1
+  image::ImageF variance;  // per channel variance of the mean radiance, s² / n (0 when n < 2); a = 1
+};
+ReferenceImages to_images(const SampleSums& sums);
+// Inverse of to_images for resuming: sums that reproduce those means and variances.
+Result<SampleSums> from_images(const ReferenceImages& images, std::uint32_t samples);
+
+}  // namespace proxygi::ref
