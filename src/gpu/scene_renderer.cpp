@@ -1,6 +1,7 @@
 #include "gpu/scene_renderer.h"
 
 #include <cstring>
+#include <functional>
 #include <map>
 
 #include "anim/gltf_import.h"
@@ -276,14 +277,9 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Context& context, c
   return renderer;
 }
 
-Status SceneRenderer::begin_frame(int frame) {
+Result<std::vector<DrawItem>> SceneRenderer::prepare_frame(int frame, std::uint32_t slot) {
   const auto start = std::chrono::steady_clock::now();
-  const std::uint32_t slot = std::uint32_t(frame) % std::uint32_t(in_flight_.size());
-  if (slot_frame_[slot] >= 0)
-    return make_error("frame " + std::to_string(slot_frame_[slot]) + " still holds ring slot " + std::to_string(slot) +
-                      ": finish it before beginning frame " + std::to_string(frame));
   const double t = scene::frame_time_s(scene_.output, frame);
-
   spheres_.clear();
   std::vector<DrawItem> draws;
   for (auto& instance : instances_) {
@@ -293,7 +289,7 @@ Status SceneRenderer::begin_frame(int frame) {
     if (Status posed = anim::evaluate_pose(character, instance->clip, clip_time, anim::WrapMode::loop, instance->pose,
                                            scene::character_world_matrix(entry, t));
         !posed)
-      return posed;
+      return posed.error();
     for (auto& mesh : instance->meshes) {
       const std::vector<glm::mat4> rigid = {instance->pose.world[std::size_t(mesh.node)]};
       const std::vector<glm::mat4>& palette =
@@ -304,7 +300,7 @@ Status SceneRenderer::begin_frame(int frame) {
                          mesh.index_counts[i], mesh.colors[i]});
     }
     proxies::TrackProxiesJob track{&instance->model->tracking, instance->pose.world, instance->spheres};
-    if (Status tracked = track.run(); !tracked) return tracked;
+    if (Status tracked = track.run(); !tracked) return tracked.error();
     for (const auto& sphere : instance->spheres) spheres_.push_back({sphere.center, sphere.radius, sphere.albedo});
   }
   for (const auto& mesh : static_meshes_) draws.push_back(mesh.draw());
@@ -316,23 +312,63 @@ Status SceneRenderer::begin_frame(int frame) {
   view.projection = scene::projection_matrix(camera, aspect);
   view.eye = camera.eye;
   view.forward = glm::normalize(camera.target - camera.eye);
-  if (Status written = frame_->write_slot(slot, view, spheres_); !written) return written;
+  if (Status written = frame_->write_slot(slot, view, spheres_); !written) return written.error();
 
   slot_statistics_[slot] = {};
   slot_statistics_[slot].proxies = spheres_.size();
   slot_statistics_[slot].cpu_prepare_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return draws;
+}
+
+void SceneRenderer::record_skinning(VkCommandBuffer commands, std::uint32_t slot) const {
+  memory_barrier(commands);  // the previous frame may still read the skinned vertices
+  for (const auto& instance : instances_)
+    for (const auto& mesh : instance->meshes)
+      for (const auto& primitive : mesh.primitives)
+        skin_pass_->record(context_, commands, primitive, mesh.palettes[slot], nullptr);
+}
+
+Status SceneRenderer::begin_frame(int frame) {
+  const std::uint32_t slot = std::uint32_t(frame) % std::uint32_t(in_flight_.size());
+  if (slot_frame_[slot] >= 0)
+    return make_error("frame " + std::to_string(slot_frame_[slot]) + " still holds ring slot " + std::to_string(slot) +
+                      ": finish it before beginning frame " + std::to_string(frame));
+  auto draws = prepare_frame(frame, slot);
+  if (!draws) return draws.error();
   Status submitted = in_flight_[slot].submit([&](VkCommandBuffer commands) {
-    memory_barrier(commands);  // the previous frame may still read the skinned vertices
-    for (const auto& instance : instances_)
-      for (const auto& mesh : instance->meshes)
-        for (const auto& primitive : mesh.primitives)
-          skin_pass_->record(context_, commands, primitive, mesh.palettes[slot], nullptr);
-    frame_->record(commands, slot, draws);
+    record_skinning(commands, slot);
+    frame_->record(commands, slot, *draws);
   });
   if (!submitted) return submitted;
   slot_frame_[slot] = frame;
   return {};
+}
+
+Result<PassTimings> SceneRenderer::time_passes(int frame) {
+  for (std::size_t slot = 0; slot < in_flight_.size(); ++slot)
+    if (slot_frame_[slot] >= 0) return make_error("time_passes: finish every begun frame first");
+  const auto start = std::chrono::steady_clock::now();
+  auto draws = prepare_frame(frame, 0);
+  if (!draws) return draws.error();
+  PassTimings timings;
+  timings.cpu_prepare_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  timings.proxies = spheres_.size();
+  auto timed = [&](const std::function<void(VkCommandBuffer)>& record) -> Result<double> {
+    const auto begin = std::chrono::steady_clock::now();
+    if (Status done = context_.submit_and_wait(record); !done) return done.error();
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
+  };
+  auto skin = timed([&](VkCommandBuffer commands) { record_skinning(commands, 0); });
+  if (!skin) return skin.error();
+  timings.milliseconds[std::size_t(FramePass::skin)] = *skin;
+  for (FramePass pass : {FramePass::gbuffer, FramePass::receivers, FramePass::shadow, FramePass::exponentiate,
+                         FramePass::indirect, FramePass::upsample, FramePass::composite}) {
+    auto ms = timed([&](VkCommandBuffer commands) { frame_->record_pass(commands, 0, pass, *draws); });
+    if (!ms) return ms.error();
+    timings.milliseconds[std::size_t(pass)] = *ms;
+  }
+  return timings;
 }
 
 Result<FinishedFrame> SceneRenderer::finish_frame(int frame) {

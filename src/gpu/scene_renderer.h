@@ -9,6 +9,7 @@
 // Frames in flight: begin_frame(f) prepares and submits frame f into ring slot f mod N without
 // waiting for frame f−1; finish_frame(f) waits for it and returns its pixels. So a recorder can
 // keep N frames on the GPU while it encodes finished ones.
+#include <array>
 #include <chrono>
 #include <filesystem>
 #include <memory>
@@ -33,6 +34,15 @@ struct FrameStatistics {
   double cpu_prepare_ms = 0.0;       // sampling, skin palettes, tracking, uploads
 };
 
+// Milliseconds of each pass of one frame, each submitted and fenced on its own and timed with
+// the CPU clock (lavapipe's GPU timestamps are unreliable, rendering-notes §4.2). Their sum
+// exceeds a pipelined frame's time by the per-submit overhead.
+struct PassTimings {
+  std::array<double, std::size_t(FramePass::count)> milliseconds{};  // indexed by FramePass
+  double cpu_prepare_ms = 0.0;
+  std::size_t proxies = 0;
+};
+
 struct FinishedFrame {
   int frame = 0;
   std::vector<std::uint8_t> ldr;     // RGBA8 sRGB, width × height
@@ -53,6 +63,9 @@ class SceneRenderer {
   Result<FinishedFrame> finish_frame(int frame);
   // begin + finish.
   Result<FinishedFrame> render(int frame);
+  // Prepares frame `frame` and runs its passes one submit each, timing every pass. Needs every
+  // begun frame finished. The frame's pixels are not copied out.
+  Result<PassTimings> time_passes(int frame);
 
   const scene::Scene& scene() const { return scene_; }
   const SoftGiFrame& frame() const { return *frame_; }
@@ -61,7 +74,10 @@ class SceneRenderer {
  private:
   struct Model;
   struct Instance;
-  explicit SceneRenderer(Context& context);  // out of line: Model and Instance are incomplete here
+  explicit SceneRenderer(Context& context);
+  // CPU half of a frame into ring slot `slot`: poses, skin palettes, tracking, constants.
+  Result<std::vector<DrawItem>> prepare_frame(int frame, std::uint32_t slot);
+  void record_skinning(VkCommandBuffer commands, std::uint32_t slot) const;  // out of line: Model and Instance are incomplete here
 
   Context& context_;
   scene::Scene scene_;

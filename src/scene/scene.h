@@ -214,7 +214,7 @@ struct RenderSettings {
   Exponential exponential = Exponential::hyb;
   float hyb_tau = 0.25f;         // HYB: halve until |f_hat| <= tau, > 0
   Upsampling upsampling = Upsampling::bilateral;
-  SplatMethod splat = SplatMethod::raster;
+  SplatMethod splat = SplatMethod::compute;  // the gather measured faster on lavapipe (README)
   bool indirect = true;
   Tonemap tonemap = Tonemap::aces;
   float exposure_ev = 0.0f;      // radiance is multiplied by 2^exposure_ev before the tonemap

@@ -27,23 +27,26 @@ Environment daylight() {
 Scene default_scene() {
   Scene scene;
   scene.description =
-      "Built-in default: the mannequin walks 4.8 m across a light gray ground under a blue sky "
+      "Built-in default: the mannequin walks 4.4 m across a light gray ground under a blue sky "
       "and a warm sun; a fixed camera frames the whole walk.";
 
   Character walker;
   walker.model = std::string(kBuiltinMannequin);
   walker.clip = std::string("walk");
-  walker.path = WalkPath{glm::vec3(-2.4f, 0.0f, 0.0f), glm::vec3(2.4f, 0.0f, 0.0f), 1.2f,
+  // 1.1 m/s is the mannequin walk's stride speed (anim::kWalkSpeed): the feet stay planted.
+  walker.path = WalkPath{glm::vec3(-2.2f, 0.0f, 0.0f), glm::vec3(2.2f, 0.0f, 0.0f), 1.1f,
                          WalkPath::Repeat::none};
   scene.characters.push_back(walker);
 
   scene.environment = daylight();
-  scene.ground = Ground{true, 20.0f, glm::vec3(0.8f, 0.8f, 0.8f)};
+  // A large ground reaches almost to the horizon, so no band of distant "below horizon" sky
+  // shows between its edge and the horizon.
+  scene.ground = Ground{true, 200.0f, glm::vec3(0.8f, 0.8f, 0.8f)};
 
   FixedCamera camera;
-  camera.position = glm::vec3(0.0f, 2.6f, 9.5f);
+  camera.position = glm::vec3(0.0f, 1.9f, 7.2f);
   camera.target = glm::vec3(0.0f, 0.9f, 0.0f);
-  camera.fov_degrees = 42.0f;
+  camera.fov_degrees = 50.0f;
   scene.camera.kind = camera;
   scene.camera.near_m = 0.1f;
   scene.camera.far_m = 100.0f;
@@ -80,7 +83,7 @@ Scene crowd_scene() {
       WalkPath path;
       path.start = glm::vec3(reversed ? -start_x : start_x, 0.0f, z);
       path.end = glm::vec3(reversed ? -start_x - kLane : start_x + kLane, 0.0f, z);
-      path.speed = running ? 3.0f : 1.2f;
+      path.speed = running ? 3.0f : 1.1f;  // the clips' stride speeds (anim::kRunSpeed, kWalkSpeed)
       path.repeat = WalkPath::Repeat::ping_pong;
       c.path = path;
       scene.characters.push_back(c);
@@ -88,7 +91,7 @@ Scene crowd_scene() {
   }
 
   scene.environment = daylight();
-  scene.ground = Ground{true, 30.0f, glm::vec3(0.8f, 0.8f, 0.8f)};
+  scene.ground = Ground{true, 200.0f, glm::vec3(0.8f, 0.8f, 0.8f)};
 
   OrbitCamera camera;
   camera.target = glm::vec3(0.0f, 0.8f, 0.0f);

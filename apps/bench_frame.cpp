@@ -1,0 +1,148 @@
+// proxygi bench frame [--json]: milliseconds per pass and per frame, proxies, fps and the shadow
+// accumulation's effective pixel-proxy pairs per second, for the default scene at 512×512 with
+// receivers at 1/1, 1/2, 1/4, 1/8 and the built-in crowd of 20 characters at 1/4, in one run.
+// Whole frames are timed pipelined (two frames in flight, as `record` runs); passes are timed one
+// fenced submit each with the CPU clock (lavapipe's timestamps are unreliable).
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+#include "apps/commands.h"
+#include "gpu/scene_renderer.h"
+#include "scene/scene_defaults.h"
+
+namespace proxygi::app {
+namespace {
+
+struct BenchOptions {
+  bool json = false;
+  int frames = 6;
+  int size = 512;
+  std::string device;
+};
+
+struct ConfigResult {
+  std::string name;
+  int receiver_scale = 0;
+  std::size_t characters = 0;
+  double frame_ms = 0.0;  // pipelined wall time per frame
+  gpu::PassTimings passes;  // mean over the timed frames
+  double pairs_per_second = 0.0;
+};
+
+Result<ConfigResult> run_config(gpu::Context& context, const std::string& name, scene::Scene scene, int scale,
+                                const BenchOptions& options) {
+  scene.output.width = scene.output.height = options.size;
+  scene.render.receiver_scale = scale;
+  auto renderer = gpu::SceneRenderer::create(context, scene, {assets_dir(), true});
+  if (!renderer) return renderer.error();
+  ConfigResult result;
+  result.name = name;
+  result.receiver_scale = scale;
+  result.characters = scene.characters.size();
+  const int first = scene.output.first_frame;
+  for (int warm = 0; warm < 2; ++warm)
+    if (auto done = (*renderer)->render(first + warm); !done) return done.error();
+
+  // Pipelined: keep two frames in flight.
+  const auto start = std::chrono::steady_clock::now();
+  for (int i = 0; i < options.frames; ++i) {
+    const int frame = first + 2 + i;
+    if (Status begun = (*renderer)->begin_frame(frame); !begun) return begun.error();
+    if (i > 0)
+      if (auto done = (*renderer)->finish_frame(frame - 1); !done) return done.error();
+  }
+  if (auto done = (*renderer)->finish_frame(first + 1 + options.frames); !done) return done.error();
+  result.frame_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() / options.frames;
+
+  for (int i = 0; i < options.frames; ++i) {
+    auto timings = (*renderer)->time_passes(first + 2 + i);
+    if (!timings) return timings.error();
+    for (std::size_t p = 0; p < timings->milliseconds.size(); ++p)
+      result.passes.milliseconds[p] += timings->milliseconds[p] / options.frames;
+    result.passes.cpu_prepare_ms += timings->cpu_prepare_ms / options.frames;
+    result.passes.proxies = timings->proxies;
+  }
+  const double receivers = double((options.size + scale - 1) / scale) * double((options.size + scale - 1) / scale);
+  const double shadow_ms = result.passes.milliseconds[std::size_t(gpu::FramePass::shadow)];
+  result.pairs_per_second = shadow_ms > 0.0 ? receivers * double(result.passes.proxies) / (shadow_ms * 1e-3) : 0.0;
+  return result;
+}
+
+int run_bench_frame(const BenchOptions& options) {
+  auto context = gpu::Context::create({.device_request = options.device});
+  if (!context) return fail_runtime(context.message());
+  std::vector<ConfigResult> results;
+  for (int scale : {1, 2, 4, 8}) {
+    auto result = run_config(**context, "default", scene::default_scene(), scale, options);
+    if (!result) return fail_runtime("bench frame: default scene, 1/" + std::to_string(scale) + ": " + result.message());
+    results.push_back(*result);
+  }
+  auto crowd = run_config(**context, "crowd", scene::crowd_scene(), 4, options);
+  if (!crowd) return fail_runtime("bench frame: crowd scene: " + crowd.message());
+  results.push_back(*crowd);
+
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  const double peak_mib = double(usage.ru_maxrss) / 1024.0;
+  const auto& report = (*context)->report();
+  const double k1 = results[0].frame_ms, k4 = results[2].frame_ms;
+
+  if (options.json) {
+    nlohmann::json out;
+    out["device"] = report.name;
+    out["driver"] = report.driver;
+    out["size"] = options.size;
+    out["frames"] = options.frames;
+    out["peak_resident_mib"] = peak_mib;
+    out["speedup_quarter_over_full"] = k1 / k4;
+    for (const auto& result : results) {
+      nlohmann::json entry = {{"scene", result.name},
+                              {"receiver_scale", result.receiver_scale},
+                              {"characters", result.characters},
+                              {"proxies", result.passes.proxies},
+                              {"frame_ms", result.frame_ms},
+                              {"fps", 1000.0 / result.frame_ms},
+                              {"cpu_prepare_ms", result.passes.cpu_prepare_ms},
+                              {"shadow_pairs_per_second", result.pairs_per_second}};
+      for (std::size_t p = 0; p < result.passes.milliseconds.size(); ++p)
+        entry["pass_ms"][gpu::frame_pass_name(gpu::FramePass(p))] = result.passes.milliseconds[p];
+      out["results"].push_back(entry);
+    }
+    std::printf("%s\n", out.dump(2).c_str());
+    return kExitOk;
+  }
+  std::printf("device: %s (%s), %dx%d, %d frames per setting\n", report.name.c_str(), report.driver.c_str(),
+              options.size, options.size, options.frames);
+  std::printf("%-8s %3s %5s %7s %9s %6s |", "scene", "k", "chars", "proxies", "frame ms", "fps");
+  for (std::size_t p = 0; p < std::size_t(gpu::FramePass::count); ++p)
+    std::printf(" %9.9s", gpu::frame_pass_name(gpu::FramePass(p)));
+  std::printf(" | %s\n", "shadow Mpairs/s");
+  for (const auto& result : results) {
+    std::printf("%-8s 1/%d %5zu %7zu %9.2f %6.1f |", result.name.c_str(), result.receiver_scale, result.characters,
+                result.passes.proxies, result.frame_ms, 1000.0 / result.frame_ms);
+    for (double ms : result.passes.milliseconds) std::printf(" %9.2f", ms);
+    std::printf(" | %.0f\n", result.pairs_per_second / 1e6);
+  }
+  std::printf("1/4 receivers with %s upsampling vs 1/1: %.2fx faster per frame\n", "bilateral", k1 / k4);
+  std::printf("peak resident memory: %.0f MiB\n", peak_mib);
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_bench_frame_command(CLI::App& bench, CommandRunner& runner) {
+  auto options = std::make_shared<BenchOptions>();
+  auto* command = bench.add_subcommand("frame", "Per-pass and per-frame time of the soft-GI frame (default and crowd scenes)");
+  command->add_flag("--json", options->json, "Machine-readable output");
+  command->add_option("--frames", options->frames, "Frames timed per setting")->check(CLI::Range(1, 1000));
+  command->add_option("--size", options->size, "Square output size in pixels")->check(CLI::Range(16, 4096));
+  add_device_option(*command, options->device);
+  command->callback([&runner, options] { runner = [options] { return run_bench_frame(*options); }; });
+}
+
+}  // namespace proxygi::app
