@@ -132,30 +132,50 @@ def triple_product_tensor(order):
     return gamma
 
 
+def balanced_sum(terms):
+    """Sum as a balanced tree: short dependency chains let the CPU overlap the additions."""
+    if len(terms) == 1:
+        return terms[0]
+    middle = len(terms) // 2
+    return f"({balanced_sum(terms[:middle])} + {balanced_sum(terms[middle:])})"
+
+
+def load_inputs(names, count, glsl):
+    """Copies the inputs to locals so C++ stores to out cannot alias later reads."""
+    if glsl:
+        return []
+    return [f"  const float {name}{i} = {name}[{i}];" for name in names for i in range(count)]
+
+
 def product_body(gamma, a, b, out, glsl):
     count = gamma.shape[0]
-    lines = []
+    suffix = "" if glsl else "f"
+    ref_a = (lambda j: f"{a}[{j}]") if glsl else (lambda j: f"{a}{j}")
+    ref_b = (lambda k: f"{b}[{k}]") if glsl else (lambda k: f"{b}{k}")
+    lines = load_inputs([a, b], count, glsl)
     for i in range(count):
         terms = []
         for j in range(count):
             for k in range(count):
                 if gamma[i, j, k] != 0.0:
-                    terms.append(f"{format_float(gamma[i, j, k])}{'' if glsl else 'f'} * {a}[{j}] * {b}[{k}]")
-        lines.append(f"  {out}[{i}] = " + ("\n      + ".join(terms) if terms else "0.0" + ("" if glsl else "f")) + ";")
+                    terms.append(f"{format_float(gamma[i, j, k])}{suffix} * {ref_a(j)} * {ref_b(k)}")
+        lines.append(f"  {out}[{i}] = " + (balanced_sum(terms) if terms else "0.0" + suffix) + ";")
     return "\n".join(lines)
 
 
 def square_body(gamma, a, out, glsl):
     count = gamma.shape[0]
-    lines = []
+    suffix = "" if glsl else "f"
+    ref = (lambda j: f"{a}[{j}]") if glsl else (lambda j: f"{a}{j}")
+    lines = load_inputs([a], count, glsl)
     for i in range(count):
         terms = []
         for j in range(count):
             for k in range(j, count):
                 if gamma[i, j, k] != 0.0:
                     value = gamma[i, j, k] * (1.0 if j == k else 2.0)
-                    terms.append(f"{format_float(value)}{'' if glsl else 'f'} * {a}[{j}] * {a}[{k}]")
-        lines.append(f"  {out}[{i}] = " + ("\n      + ".join(terms) if terms else "0.0" + ("" if glsl else "f")) + ";")
+                    terms.append(f"{format_float(value)}{suffix} * {ref(j)} * {ref(k)}")
+        lines.append(f"  {out}[{i}] = " + (balanced_sum(terms) if terms else "0.0" + suffix) + ";")
     return "\n".join(lines)
 
 
