@@ -280,15 +280,6 @@ Result<std::span<const std::uint8_t>> buffer_view_bytes(const ImportContext& ctx
                                        ctx.model.bufferViews[static_cast<std::size_t>(view)].byteLength);
 }
 
-Result<std::size_t> accessor_count(const ImportContext& ctx, int index, const std::string& what) {
-  const auto& accessors = ctx.model.accessors;
-  if (index < 0 || static_cast<std::size_t>(index) >= accessors.size()) {
-    return error_at(what, "accessor " + std::to_string(index) + " out of range (" +
-                              std::to_string(accessors.size()) + " accessors)");
-  }
-  return accessors[static_cast<std::size_t>(index)].count;
-}
-
 Result<FloatAccessor> read_float_accessor(ImportContext& ctx, int index, const std::string& what,
                                           const std::vector<int>& types,
                                           const std::vector<int>& component_types) {

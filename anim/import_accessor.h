@@ -40,9 +40,6 @@ Result<UintAccessor> read_uint_accessor(ImportContext& ctx, int accessor, const 
 Result<std::span<const std::uint8_t>> buffer_view_bytes(const ImportContext& ctx, int view,
                                                         const std::string& what);
 
-// Element count of an accessor after range checks on its index and count only (cheap).
-Result<std::size_t> accessor_count(const ImportContext& ctx, int accessor, const std::string& what);
-
 std::string component_type_name(int component_type);
 std::string type_name(int type);
 

@@ -308,6 +308,28 @@ TEST(ImportFeatures, BaseColorTextureFromDataUri) {
   EXPECT_EQ(c.meshes[0].primitives[0].material, 0);
 }
 
+TEST(ImportFeatures, ExternalImageInModelFolder) {
+  const std::vector<std::uint8_t> png = {
+      0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48, 0x44, 0x52, 0x00, 0x00, 0x00,
+      0x01, 0x00, 0x00, 0x00, 0x01, 0x08, 0x06, 0x00, 0x00, 0x00, 0x1f, 0x15, 0xc4, 0x89, 0x00, 0x00, 0x00, 0x0d, 0x49,
+      0x44, 0x41, 0x54, 0x78, 0x9c, 0x63, 0xf8, 0xcf, 0xc0, 0xf0, 0x1f, 0x00, 0x05, 0x00, 0x01, 0xff, 0x89, 0x99, 0x3d,
+      0x1d, 0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
+  const auto folder = std::filesystem::path(PROXYGI_TEST_OUTPUT_DIR) / "import_external_image";
+  std::filesystem::create_directories(folder / "textures");
+  std::ofstream(folder / "textures" / "red.png", std::ios::binary)
+      .write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+  auto b = testing::skinned_quad();
+  auto& j = b.json();
+  j["images"] = {{{"uri", "textures/red.png"}}};
+  j["textures"] = {{{"source", 0}}};
+  j["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+  const auto path = b.write_with_external_bin(folder, "textured", "textured.bin");
+  auto result = import_gltf(path);
+  ASSERT_TRUE(result.ok()) << result.message();
+  ASSERT_EQ(result->images.size(), 1u);
+  EXPECT_EQ(result->images[0].rgba, (std::vector<std::uint8_t>{255, 0, 0, 255}));
+}
+
 }  // namespace
 }  // namespace proxygi::anim
 
