@@ -19,28 +19,63 @@ inline f4 load4(const float* p) {
 
 inline f4 splat(float x) { return f4{x, x, x, x}; }
 
-inline void store3(glm::vec3& out, f4 v) { out = glm::vec3(v[0], v[1], v[2]); }
+typedef float f2 __attribute__((vector_size(8)));
 
-inline f4 normalized(f4 n) {
-  const float length2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-  if (!(length2 > 0.0f)) return f4{0.0f, 0.0f, 0.0f, 0.0f};
-  return n * splat(1.0f / std::sqrt(length2));
+// Writes x, y, z as one 8-byte and one 4-byte store (no trip through the stack).
+inline void store3(float* out, f4 v) {
+  const f2 xy = {v[0], v[1]};
+  std::memcpy(out, &xy, sizeof xy);
+  out[2] = v[2];
+}
+
+inline f4 sqrt4(f4 x) {
+#if defined(__SSE__)
+  return __builtin_ia32_sqrtps(x);
+#else
+  return f4{std::sqrt(x[0]), std::sqrt(x[1]), std::sqrt(x[2]), std::sqrt(x[3])};
+#endif
+}
+
+// Normalizes n[0..count) (xyz triples) in place, four at a time: one vector sqrt and divide per
+// four normals. Zero vectors stay zero.
+void normalize_all(float* n, std::size_t count) {
+  const f4 zero = {0.0f, 0.0f, 0.0f, 0.0f};
+  std::size_t v = 0;
+  for (; v + 4 <= count; v += 4) {
+    float* q = n + 3 * v;
+    const f4 length2 = {q[0] * q[0] + q[1] * q[1] + q[2] * q[2], q[3] * q[3] + q[4] * q[4] + q[5] * q[5],
+                        q[6] * q[6] + q[7] * q[7] + q[8] * q[8], q[9] * q[9] + q[10] * q[10] + q[11] * q[11]};
+    const f4 scale = length2 > zero ? splat(1.0f) / sqrt4(length2) : zero;
+    for (int i = 0; i < 12; ++i) q[i] *= scale[i / 3];
+  }
+  for (; v < count; ++v) {
+    float* q = n + 3 * v;
+    const float length2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2];
+    const float scale = length2 > 0.0f ? 1.0f / std::sqrt(length2) : 0.0f;
+    for (int i = 0; i < 3; ++i) q[i] *= scale;
+  }
 }
 
 // The skinning loop, specialized on the influence count (0 = runtime count) and on which
 // normal path runs. Columns of the blended matrix M are accumulated as four f4 registers; the
 // first influence initializes them (0 + w·S == w·S, so this equals the documented sum).
+// Normals are stored unnormalized, then normalized in a second pass over the cache-hot output.
 template <int kInfluences, bool kNormals, bool kNormalMatrices>
 void skin_vertices(const SkinningJob& job) {
-  const int influences = kInfluences > 0 ? kInfluences : job.influences_per_vertex;
-  const float* palette = reinterpret_cast<const float*>(job.skin_matrices.data());
-  const float* normal_palette = reinterpret_cast<const float*>(job.normal_matrices.data());
-  const std::uint16_t* joints = job.joints.data();
-  const float* weights = job.weights.data();
+  const std::size_t influences = static_cast<std::size_t>(kInfluences > 0 ? kInfluences : job.influences_per_vertex);
+  const float* const palette = reinterpret_cast<const float*>(job.skin_matrices.data());
+  const float* const normal_palette = reinterpret_cast<const float*>(job.normal_matrices.data());
+  const std::uint16_t* const joints = job.joints.data();
+  const float* const weights = job.weights.data();
+  const float* const positions = reinterpret_cast<const float*>(job.positions.data());
+  const float* const normals = reinterpret_cast<const float*>(job.normals.data());
+  float* const out_positions = reinterpret_cast<float*>(job.out_positions.data());
+  float* const out_normals = reinterpret_cast<float*>(job.out_normals.data());
   const std::size_t count = job.positions.size();
+
   for (std::size_t v = 0; v < count; ++v) {
-    const std::uint16_t* j = joints + v * static_cast<std::size_t>(influences);
-    const float* w = weights + v * static_cast<std::size_t>(influences);
+    const std::uint16_t* j = joints + v * influences;
+    const float* w = weights + v * influences;
     f4 c0, c1, c2, c3, n0, n1, n2;
     {
       const float* m = palette + 16u * j[0];
@@ -56,7 +91,7 @@ void skin_vertices(const SkinningJob& job) {
         n2 = wk * load4(nm + 8);
       }
     }
-    for (int k = 1; k < influences; ++k) {
+    for (std::size_t k = 1; k < influences; ++k) {
       const float* m = palette + 16u * j[k];
       const f4 wk = splat(w[k]);
       c0 += wk * load4(m);
@@ -70,17 +105,18 @@ void skin_vertices(const SkinningJob& job) {
         n2 += wk * load4(nm + 8);
       }
     }
-    const glm::vec3 p = job.positions[v];
-    store3(job.out_positions[v], c0 * splat(p.x) + c1 * splat(p.y) + c2 * splat(p.z) + c3);
+    const float* p = positions + 3 * v;
+    store3(out_positions + 3 * v, c0 * splat(p[0]) + c1 * splat(p[1]) + c2 * splat(p[2]) + c3);
     if constexpr (kNormals) {
-      const glm::vec3 n = job.normals[v];
+      const float* n = normals + 3 * v;
       if constexpr (kNormalMatrices) {
-        store3(job.out_normals[v], normalized(n0 * splat(n.x) + n1 * splat(n.y) + n2 * splat(n.z)));
+        store3(out_normals + 3 * v, n0 * splat(n[0]) + n1 * splat(n[1]) + n2 * splat(n[2]));
       } else {
-        store3(job.out_normals[v], normalized(c0 * splat(n.x) + c1 * splat(n.y) + c2 * splat(n.z)));
+        store3(out_normals + 3 * v, c0 * splat(n[0]) + c1 * splat(n[1]) + c2 * splat(n[2]));
       }
     }
   }
+  if constexpr (kNormals) normalize_all(out_normals, count);
 }
 
 template <int kInfluences>
