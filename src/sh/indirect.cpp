@@ -100,6 +100,19 @@ Eigen::MatrixXd exact_indirect_operator(int order, double s) {
   return m;
 }
 
+ExactIndirectTable make_exact_indirect_table(int order, int rows) {
+  PROXYGI_CHECK(rows >= 2, "a table needs at least two rows");
+  ExactIndirectTable table{order, rows, {}};
+  const int count = order * order;
+  table.values.reserve(std::size_t(rows) * std::size_t(count) * std::size_t(count));
+  for (int i = 0; i < rows; ++i) {
+    const Eigen::MatrixXd m = exact_indirect_operator(order, std::clamp(double(i) / double(rows - 1), 1e-4, 1.0 - 1e-6));
+    for (int j = 0; j < count; ++j)
+      for (int k = 0; k < count; ++k) table.values.push_back(float(m(j, k)));
+  }
+  return table;
+}
+
 Eigen::MatrixXd point_indirect_operator(int order, double s) {
   const Eigen::VectorXd visibility = zonal_to_full(order, proxy_visibility_zonal(order, s));
   return visibility * canonical_kernel(order, point_indirect_zonal(order)).transpose();

@@ -39,6 +39,16 @@ Eigen::MatrixXd exact_indirect_operator(int order, double s);
 Eigen::MatrixXd point_indirect_operator(int order, double s);
 Eigen::MatrixXd averaged_indirect_operator(int order, double s);  // numerical D
 
+// M(s) tabulated for the GPU or a CPU cache: rows over s like ZonalTable (row i <-> s = i/(rows-1),
+// the ends clamped into (0, 1)); each row is the n*n x n*n matrix in row-major order (M_jk at
+// j * n*n + k), floats: values[(i * n*n + j) * n*n + k].
+struct ExactIndirectTable {
+  int order = 0;
+  int rows = 0;
+  std::vector<float> values;
+};
+ExactIndirectTable make_exact_indirect_table(int order, int rows = 64);
+
 // Eq. 17: the exact operator for a proxy in direction dhat (unit): R^-1 M(theta) R Ltilde.
 std::vector<double> apply_exact_indirect(int order, double s, const glm::dvec3& direction, std::span<const double> lighting_convolved);
 

@@ -78,6 +78,14 @@ TEST(ShIndirect, AveragedBeatsPointSampledAsInFigure5) {
   EXPECT_LT(indirect_operator_errors(3, 0.02).averaged, indirect_operator_errors(3, 0.5).averaged);
 }
 
+TEST(ShIndirect, ExactTableRowsAreTheOperator) {
+  const ExactIndirectTable table = make_exact_indirect_table(3, 11);
+  ASSERT_EQ(table.values.size(), 11u * 81u);
+  const Eigen::MatrixXd m = exact_indirect_operator(3, 0.5);  // row 5
+  for (int j = 0; j < 9; ++j)
+    for (int k = 0; k < 9; ++k) EXPECT_NEAR(table.values[std::size_t((5 * 9 + j) * 9 + k)], m(j, k), 1e-6);
+}
+
 TEST(ShIndirect, PointKernelEvaluatesTheLightingOppositeTheProxy) {
   const int order = 4;
   const glm::dvec3 dir = glm::normalize(glm::dvec3(0.1, 0.9, -0.3));
