@@ -57,6 +57,34 @@ void lighting_lookup(int channel, vec3 n, out float lh[SH_COUNT]) {
   }
 }
 
+// DC coefficient of LH(N) only: enough when the visibility is the constant a(0)·1.
+float lighting_lookup_dc(int channel, vec3 n) {
+  vec3 a = abs(n);
+  int face;
+  float sc, tc, major;
+  if (a.x >= a.y && a.x >= a.z) {
+    face = n.x >= 0.0 ? 0 : 1; major = a.x; sc = n.x >= 0.0 ? -n.z : n.z; tc = -n.y;
+  } else if (a.y >= a.z) {
+    face = n.y >= 0.0 ? 2 : 3; major = a.y; sc = n.x; tc = n.y >= 0.0 ? n.z : -n.z;
+  } else {
+    face = n.z >= 0.0 ? 4 : 5; major = a.z; sc = n.z >= 0.0 ? n.x : -n.x; tc = -n.y;
+  }
+  int size = int(frame.tables.w);
+  float u = clamp((0.5 * (sc / major + 1.0)) * float(size) - 0.5, 0.0, float(size - 1));
+  float v = clamp((0.5 * (tc / major + 1.0)) * float(size) - 0.5, 0.0, float(size - 1));
+  int x0 = min(int(u), size - 1), y0 = min(int(v), size - 1);
+  int x1 = min(x0 + 1, size - 1), y1 = min(y0 + 1, size - 1);
+  float fx = u - float(x0), fy = v - float(y0);
+  int channel_base = channel * 6 * size * size * SH_COUNT;
+  float t00 = lighting_cube[channel_base + ((face * size + y0) * size + x0) * SH_COUNT];
+  float t10 = lighting_cube[channel_base + ((face * size + y0) * size + x1) * SH_COUNT];
+  float t01 = lighting_cube[channel_base + ((face * size + y1) * size + x0) * SH_COUNT];
+  float t11 = lighting_cube[channel_base + ((face * size + y1) * size + x1) * SH_COUNT];
+  float top = t00 + fx * (t10 - t00);
+  float bottom = t01 + fx * (t11 - t01);
+  return top + fy * (bottom - top);
+}
+
 void main() {
   uvec2 receiver = gl_GlobalInvocationID.xy;
   uvec2 receiver_size = frame.sizes.zw;
@@ -72,6 +100,14 @@ void main() {
   for (int i = 0; i < SH_COUNT; ++i) {
     f[i] = log_occlusion[index * SH_COUNT + i];
     if (i > 0) norm_squared += f[i] * f[i];
+  }
+  if (norm_squared == 0.0 && f[0] == 0.0) {
+    // No proxy reaches this receiver: O_p = a(0)·1, so only LH's DC coefficient matters.
+    float g0 = optimal_linear_lookup(0.0).x * kSqrtFourPi;
+    vec3 unshadowed = vec3(lighting_lookup_dc(0, r.normal.xyz), lighting_lookup_dc(1, r.normal.xyz),
+                           lighting_lookup_dc(2, r.normal.xyz));
+    direct[index] = vec4(max(g0 * unshadowed, vec3(0.0)), g0);
+    return;
   }
   float dc = exp(0.28209479177387814 * f[0]);
   float norm = sqrt(norm_squared);

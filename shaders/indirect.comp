@@ -4,6 +4,7 @@
 // ξ_p = clamp((V_p)_0 / (ω_p/√4π), 0, 1) with (V_p)_0 = √4π − (O_p)_0 from the exponentiation.
 // Output per receiver: (E_r, E_g, E_b, ω_p). CPU twin: render::accumulate_indirect.
 #extension GL_GOOGLE_include_directive : require
+#define FRAME_TILE_CULLING
 #include "frame_common.glsl"
 #include "sh/sh_basis.glsl"
 
@@ -21,17 +22,25 @@ float influence_fade(float s, float eta, int rows) {
   return t * t * (3.0 - 2.0 * t);
 }
 
+vec4 proxy_center_radius(uint i) { return proxies[i].center_radius; }
+
 void main() {
   uvec2 receiver = gl_GlobalInvocationID.xy;
   uvec2 receiver_size = frame.sizes.zw;
-  if (any(greaterThanEqual(receiver, receiver_size))) return;
+  bool inside = all(lessThan(receiver, receiver_size));
   uint index = receiver.y * receiver_size.x + receiver.x;
-  Receiver r = receivers[index];
-  if (r.position_depth.w <= 0.0 || frame.output_params.w == 0.0) {
+  Receiver r;
+  r.position_depth = vec4(0.0);
+  r.normal = vec4(0.0, 1.0, 0.0, 0.0);
+  if (inside) r = receivers[index];
+  bool valid = inside && r.position_depth.w > 0.0 && frame.output_params.w != 0.0;
+  vec3 p = r.position_depth.xyz;
+  TILE_CULL(proxy_center_radius, frame.counts.x, frame.shadow.y, p, valid);
+  if (!inside) return;
+  if (!valid) {
     indirect[index] = vec4(0.0);
     return;
   }
-  vec3 p = r.position_depth.xyz;
   vec3 normal = r.normal.xyz;
   float normal_basis[9];
   sh_eval_basis_3(normal, normal_basis);
@@ -41,8 +50,8 @@ void main() {
   int rows = int(frame.tables.z);
   vec3 summed = vec3(0.0);
   float solid_angle_sum = 0.0;
-  uint proxy_count = frame.counts.x;
-  for (uint i = 0u; i < proxy_count; ++i) {
+  for (uint t = 0u; t < tile_proxy_count; ++t) {
+    uint i = tile_proxies[t];
     vec4 sphere = proxies[i].center_radius;
     vec3 offset = sphere.xyz - p;
     float reach = eta * sphere.w;

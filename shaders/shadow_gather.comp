@@ -1,9 +1,10 @@
 #version 460
-// Shadow accumulation (frame step 4), the compute-gather variant: every receiver loops over the
-// proxies (per-proxy data in a uniform buffer, as rendering-notes §6 recommends on lavapipe) and
+// Shadow accumulation (frame step 4), the compute-gather variant with tiled culling: every
+// receiver loops over the proxies its 8×8 tile kept (per-proxy data in a uniform buffer, as rendering-notes §6 recommends on lavapipe) and
 // sums f = Σ_i rot(O_log(s_i), d_i). The coverage oracle is the faded table: s ≤ 1/η gives 0
 // and is skipped before any SH work. CPU twin: render::accumulate_log_occlusion.
 #extension GL_GOOGLE_include_directive : require
+#define FRAME_TILE_CULLING
 #include "frame_common.glsl"
 #include "sh/sh_basis.glsl"
 
@@ -19,22 +20,30 @@ layout(std140, set = 0, binding = 2) uniform Proxies { ProxySphere proxies[kMaxP
 layout(std430, set = 0, binding = 3) readonly buffer LogTable { float log_table[]; };
 layout(std430, set = 0, binding = 4) writeonly buffer LogOcclusion { float log_occlusion[]; };
 
+vec4 proxy_center_radius(uint i) { return proxies[i].center_radius; }
+
 void main() {
   uvec2 receiver = gl_GlobalInvocationID.xy;
   uvec2 receiver_size = frame.sizes.zw;
-  if (any(greaterThanEqual(receiver, receiver_size))) return;
+  bool inside = all(lessThan(receiver, receiver_size));
   uint index = receiver.y * receiver_size.x + receiver.x;
-  Receiver r = receivers[index];
+  Receiver r;
+  r.position_depth = vec4(0.0);
+  r.normal = vec4(0.0, 1.0, 0.0, 0.0);
+  if (inside) r = receivers[index];
+  bool valid = inside && r.position_depth.w > 0.0;
+  vec3 p = r.position_depth.xyz;
+  TILE_CULL(proxy_center_radius, frame.counts.x, frame.shadow.x, p, valid);
+  if (!inside) return;
+
   float f[SH_COUNT];
   for (int i = 0; i < SH_COUNT; ++i) f[i] = 0.0;
-  if (r.position_depth.w > 0.0) {
-    vec3 p = r.position_depth.xyz;
+  if (valid) {
     vec3 normal = r.normal.xyz;
     float minimum_sine = 1.0 / frame.shadow.x;
     int rows = int(frame.shadow.w);
-    uint proxy_count = frame.counts.x;
-    for (uint i = 0u; i < proxy_count; ++i) {
-      vec4 sphere = proxies[i].center_radius;
+    for (uint t = 0u; t < tile_proxy_count; ++t) {
+      vec4 sphere = proxies[tile_proxies[t]].center_radius;
       // Cheap reject before the rules: outside the sphere of influence η·r.
       vec3 offset = sphere.xyz - p;
       float reach = frame.shadow.x * sphere.w;

@@ -6,6 +6,7 @@
 
 #include "anim/gltf_import.h"
 #include "anim/posed_character.h"
+#include "anim/skinning.h"
 #include "base/log.h"
 #include "gpu/transfer.h"
 #include "proxies/fit.h"
@@ -32,7 +33,8 @@ struct MeshDraw {
   std::vector<Buffer> indices;
   std::vector<std::uint32_t> index_counts;
   std::vector<glm::vec4> colors;
-  std::vector<Buffer> palettes;  // one per ring slot, host-visible
+  std::vector<Buffer> palettes;         // skin matrices, one buffer per ring slot, host-visible
+  std::vector<Buffer> normal_palettes;  // their inverse-transposes (anim::normal_matrix layout)
 };
 
 struct SceneRenderer::Instance {
@@ -222,12 +224,13 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Context& context, c
         draw.index_counts.push_back(std::uint32_t(primitive.indices.size()));
         draw.colors.push_back(material_color(character, primitive.material));
       }
-      for (std::uint32_t slot = 0; slot < slots; ++slot) {
-        auto palette = Buffer::create(context, palette_size * sizeof(glm::mat4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                      MemoryKind::host_visible);
-        if (!palette) return palette.error();
-        draw.palettes.push_back(std::move(*palette));
-      }
+      for (std::uint32_t slot = 0; slot < slots; ++slot)
+        for (auto* palettes : {&draw.palettes, &draw.normal_palettes}) {
+          auto palette = Buffer::create(context, palette_size * sizeof(glm::mat4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                        MemoryKind::host_visible);
+          if (!palette) return palette.error();
+          palettes->push_back(std::move(*palette));
+        }
       instance->meshes.push_back(std::move(draw));
     }
     renderer->instances_.push_back(std::move(instance));
@@ -291,10 +294,14 @@ Result<std::vector<DrawItem>> SceneRenderer::prepare_frame(int frame, std::uint3
         !posed)
       return posed.error();
     for (auto& mesh : instance->meshes) {
-      const std::vector<glm::mat4> rigid = {instance->pose.world[std::size_t(mesh.node)]};
-      const std::vector<glm::mat4>& palette =
-          mesh.skin >= 0 ? instance->pose.skin_matrices[std::size_t(mesh.skin)] : rigid;
+      // Normals go through the inverse-transposes, as pose_meshes does (exact under any scale).
+      const glm::mat4& node_world = instance->pose.world[std::size_t(mesh.node)];
+      const std::vector<glm::mat4> rigid = {node_world}, rigid_normals = {anim::normal_matrix(node_world)};
+      const bool skinned = mesh.skin >= 0;
+      const auto& palette = skinned ? instance->pose.skin_matrices[std::size_t(mesh.skin)] : rigid;
+      const auto& normals = skinned ? instance->pose.normal_matrices[std::size_t(mesh.skin)] : rigid_normals;
       std::memcpy(mesh.palettes[slot].mapped(), palette.data(), palette.size() * sizeof(glm::mat4));
+      std::memcpy(mesh.normal_palettes[slot].mapped(), normals.data(), normals.size() * sizeof(glm::mat4));
       for (std::size_t i = 0; i < mesh.primitives.size(); ++i)
         draws.push_back({&mesh.primitives[i].world_positions, &mesh.primitives[i].world_normals, &mesh.indices[i],
                          mesh.index_counts[i], mesh.colors[i]});
@@ -326,7 +333,7 @@ void SceneRenderer::record_skinning(VkCommandBuffer commands, std::uint32_t slot
   for (const auto& instance : instances_)
     for (const auto& mesh : instance->meshes)
       for (const auto& primitive : mesh.primitives)
-        skin_pass_->record(context_, commands, primitive, mesh.palettes[slot], nullptr);
+        skin_pass_->record(context_, commands, primitive, mesh.palettes[slot], &mesh.normal_palettes[slot]);
 }
 
 Status SceneRenderer::begin_frame(int frame) {
