@@ -10,9 +10,8 @@
 #include "anim/gltf_import.h"
 #include "anim/mannequin.h"
 #include "apps/commands.h"
-#include "proxies/binding_eval.h"
 #include "proxies/fit.h"
-#include "proxies/quality.h"
+#include "proxies/rig_cache.h"
 #include "proxies/rig_file.h"
 
 namespace proxygi::app {
@@ -87,40 +86,21 @@ int run_fit(const FitArgs& args) {
                                          : builtin ? std::filesystem::path("mannequin.proxies.json")
                                                    : proxies::default_rig_path(args.model);
 
-  if (!args.force && std::filesystem::exists(rig_path)) {
-    Result<proxies::ProxyRig> cached = proxies::read_rig(rig_path, character);
-    if (!cached) return fail_bad_input(cached.message() + " (fix the file or pass --force to refit)");
-    if (cached->model_hash == hash && cached->tolerance == args.tolerance && cached->max_spheres == args.max_spheres) {
-      if (args.json) std::printf("%s\n", report_json(*cached, args.model, rig_path.string(), true).dump(2).c_str());
-      else print_text(*cached, rig_path.string(), true);
-      return kExitOk;
-    }
+  proxies::RigRequest request;
+  request.rig_file = rig_path;
+  request.model_name = builtin ? "mannequin" : std::filesystem::path(args.model).filename().string();
+  request.model_hash = hash;
+  request.options.tolerance = args.tolerance;
+  request.options.max_spheres = args.max_spheres;
+  request.force = args.force;
+  Result<proxies::ObtainedRig> obtained = proxies::load_or_fit_rig(character, request);
+  if (!obtained) return fail_bad_input(obtained.message() + " (fix the file or pass --force to refit)");
+  const proxies::ProxyRig& rig = obtained->rig;
+  if (obtained->cache_hit) {
+    if (args.json) std::printf("%s\n", report_json(rig, args.model, rig_path.string(), true).dump(2).c_str());
+    else print_text(rig, rig_path.string(), true);
+    return kExitOk;
   }
-
-  proxies::FitResult fit;
-  proxies::FitProxiesJob job;
-  job.character = &character;
-  job.options.tolerance = args.tolerance;
-  job.options.max_spheres = args.max_spheres;
-  job.result = &fit;
-  if (Status s = job.validate(); !s) return fail_bad_input(s.message());
-  if (Status s = job.run(); !s) return fail_bad_input(s.message());
-  proxies::ProxyRig& rig = fit.rig;
-  rig.model = builtin ? "mannequin" : std::filesystem::path(args.model).filename().string();
-  rig.model_hash = hash;
-
-  std::vector<glm::vec4> spheres;
-  for (const proxies::FittedSphere& f : fit.fitted) spheres.emplace_back(f.center, f.radius);
-  rig.quality = proxies::measure_quality(character, fit.surface, spheres, fit.tolerance_m);
-  rig.has_quality = true;
-  Result<proxies::BindingEvaluation> tracking = proxies::evaluate_bindings(character, fit);
-  if (!tracking) return fail_runtime(tracking.message());
-  rig.frames_evaluated = tracking->frames;
-  rig.rigid_error = tracking->rigid;
-  rig.blended_error = tracking->blended;
-  rig.binding = tracking->better;
-
-  if (Status s = proxies::write_rig(rig_path, rig, character); !s) return fail_runtime(s.message());
   if (args.json) std::printf("%s\n", report_json(rig, args.model, rig_path.string(), false).dump(2).c_str());
   else print_text(rig, rig_path.string(), false);
   return kExitOk;

@@ -9,7 +9,7 @@
 #include "anim/skinning.h"
 #include "base/log.h"
 #include "gpu/transfer.h"
-#include "proxies/fit.h"
+#include "proxies/rig_cache.h"
 #include "proxies/rig_file.h"
 #include "render/environment_lighting.h"
 #include "scene/camera.h"
@@ -70,31 +70,21 @@ Result<anim::Character> load_model(const std::filesystem::path& file) {
   return std::move(*character);
 }
 
-// The cached rig when it belongs to this model file, else a fresh fit (cached when allowed).
+// The cached rig when it belongs to this model file, else a fresh fit (proxies/rig_cache.h).
 Result<proxies::ProxyRig> obtain_rig(const std::filesystem::path& model_file, const std::filesystem::path& rig_file,
                                      const anim::Character& character, bool write_cache) {
   auto hash = proxies::hash_file(model_file);
   if (!hash) return hash.error();
-  std::error_code missing;
-  if (std::filesystem::exists(rig_file, missing)) {
-    auto rig = proxies::read_rig(rig_file, character);
-    if (!rig) return rig.error();  // a hand-edited rig with a mistake: report it, never overwrite
-    if (rig->model_hash == *hash) return std::move(*rig);
-    log_warning(rig_file.string() + ": fitted to another version of " + model_file.filename().string() + "; refitting");
-  }
-  proxies::FitResult fit;
-  proxies::FitProxiesJob job;
-  job.character = &character;
-  job.result = &fit;
-  if (Status fitted = job.run(); !fitted) return make_error(model_file.string() + ": proxy fit failed: " + fitted.message());
-  fit.rig.model = model_file.filename().string();
-  fit.rig.model_hash = *hash;
-  log_info("proxies: fitted " + std::to_string(fit.rig.spheres.size()) + " spheres to " + model_file.string() + " in " +
-           std::to_string(int(fit.seconds * 1000.0)) + " ms");
-  if (write_cache)
-    if (Status written = proxies::write_rig(rig_file, fit.rig, character); !written)
-      log_warning("proxies: could not cache the rig: " + written.message());
-  return std::move(fit.rig);
+  proxies::RigRequest request;
+  request.rig_file = rig_file;
+  request.model_name = model_file.filename().string();
+  request.model_hash = *hash;
+  request.write_cache = write_cache;
+  auto obtained = proxies::load_or_fit_rig(character, request);
+  if (!obtained) return make_error(rig_file.string() + ": " + obtained.message());
+  if (!obtained->cache_hit)
+    log_info("proxies: fitted " + std::to_string(obtained->rig.spheres.size()) + " spheres to " + model_file.string());
+  return std::move(obtained->rig);
 }
 
 Result<int> resolve_clip(const anim::Character& character, const scene::ClipRef& clip) {
