@@ -53,6 +53,22 @@ PathSample PathTracer::shade(const SurfaceHit& first, SampleStream& random) cons
       }
     }
 
+    // Environment (sh, map): next-event estimation from the tabulated sampler, MIS as the sun.
+    const glm::vec2 u_environment = random.next_2d();
+    const EquirectSampler* environment_sampler = lighting_.importance();
+    if (environment_sampler) {
+      float pdf_environment = 0.0f;
+      const glm::vec3 d = environment_sampler->sample(u_environment, pdf_environment);
+      const float cos_theta = glm::dot(n, d);
+      if (pdf_environment > 0.0f && cos_theta > 0.0f && glm::dot(vertex.geometric_normal, d) > 0.0f) {
+        ++out.rays;
+        if (!scene_.occluded(offset_ray_origin(vertex, d), d)) {
+          const float weight = power_heuristic(pdf_environment, cosine_hemisphere_pdf(cos_theta));
+          contribution += f * lighting_.radiance_without_sun(d) * (cos_theta * weight / pdf_environment);
+        }
+      }
+    }
+
     // BSDF sample: cosine-weighted, so f cos / pdf = albedo.
     const glm::vec3 d = sample_cosine_hemisphere(n, random.next_2d());
     const bool above_surface = glm::dot(vertex.geometric_normal, d) > 0.0f;
@@ -62,6 +78,8 @@ PathSample PathTracer::shade(const SurfaceHit& first, SampleStream& random) cons
       next = scene_.intersect(offset_ray_origin(vertex, d), d);
       if (!next) {
         glm::vec3 environment = lighting_.radiance_without_sun(d);
+        if (environment_sampler)
+          environment *= power_heuristic(cosine_hemisphere_pdf(glm::dot(n, d)), environment_sampler->pdf(d));
         if (lighting_.in_sun(d)) {
           const float weight = power_heuristic(cosine_hemisphere_pdf(glm::dot(n, d)),
                                                uniform_cone_pdf(lighting_.sun_cos_radius()));

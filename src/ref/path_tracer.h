@@ -9,7 +9,9 @@
 //      1/(2 pi (1 - cos r)); if unoccluded it adds f L_sun cos / p_l · w_l,
 //    * BSDF: one cosine-weighted direction, pdf p_b = cos/pi (throughput × albedo). If it
 //      escapes, it adds albedo · (L_without_sun(d) + w_b L_sun(d)).
-//    w_l, w_b: power heuristic between p_l and p_b (Veach 1997), so the sun is counted once.
+//    * environment (sh and map lighting): one direction from the light's EquirectSampler, MIS-
+//      weighted against the BSDF sample the same way (the sky kind has a sun instead).
+//    w_l, w_b: power heuristic between p_l and p_b (Veach 1997), so light is counted once.
 //    Directions below the geometric surface carry nothing (the surface itself blocks them).
 //  - Light transport depth (LightTransport):
 //    direct       only the primary vertex's environment light, with visibility (0 bounces);

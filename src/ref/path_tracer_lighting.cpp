@@ -10,6 +10,11 @@
 #include "sh/convolution.h"
 
 namespace proxygi::ref {
+namespace {
+
+float channel_mean(const glm::vec3& rgb) { return (rgb.r + rgb.g + rgb.b) / 3.0f; }
+
+}  // namespace
 
 EnvironmentLight EnvironmentLight::constant(const glm::vec3& radiance) {
   EnvironmentLight light;
@@ -36,6 +41,9 @@ EnvironmentLight EnvironmentLight::map(image::ImageF image, float intensity, con
   light.map_ = std::move(image);
   light.map_intensity_ = intensity;
   light.world_to_environment_ = world_to_environment;
+  std::vector<float> weights(light.map_.pixels.size());
+  for (std::size_t i = 0; i < weights.size(); ++i) weights[i] = channel_mean(glm::vec3(light.map_.pixels[i]));
+  light.sampler_ = EquirectSampler(light.map_.width, light.map_.height, weights, glm::transpose(world_to_environment));
   return light;
 }
 
@@ -46,6 +54,15 @@ EnvironmentLight EnvironmentLight::spherical_harmonics(const sh::RgbSh& lighting
   for (int c = 0; c < 3; ++c)
     light.sh_coefficients_[std::size_t(c)].assign(lighting.channels[std::size_t(c)].begin(),
                                                   lighting.channels[std::size_t(c)].end());
+  // Tabulate the (smooth) band-limited radiance at texel centers for importance sampling.
+  constexpr int kWidth = 128, kHeight = 64;
+  std::vector<float> weights(std::size_t(kWidth) * kHeight);
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const glm::vec3 d = scene::equirect_direction({(x + 0.5f) / float(kWidth), (y + 0.5f) / float(kHeight)});
+      weights[std::size_t(y) * kWidth + std::size_t(x)] = channel_mean(light.radiance_without_sun(d));
+    }
+  light.sampler_ = EquirectSampler(kWidth, kHeight, weights);
   return light;
 }
 

@@ -13,6 +13,8 @@
 //    channel, L the scene's environment projected to order scene.render.sh_order by
 //    render::make_environment_lighting and windowed with sh::apply_ringing_window(order) exactly
 //    as render::make_frame_tables does. No sun term: the disc is inside the projection.
+// sh and map carry an EquirectSampler (a 128 x 64 table of the SH radiance, or the map itself)
+// for next-event estimation, MIS-combined with BSDF sampling like the sun.
 #include <array>
 #include <optional>
 #include <vector>
@@ -21,6 +23,7 @@
 
 #include "base/result.h"
 #include "image/image.h"
+#include "ref/sampling_environment.h"
 #include "scene/environment.h"
 #include "scene/scene.h"
 #include "sh/environment.h"
@@ -46,6 +49,10 @@ class EnvironmentLight {
   // Radiance without the sun disc (what only BSDF sampling can find).
   glm::vec3 radiance_without_sun(const glm::vec3& direction) const;
 
+  // Importance sampler of radiance_without_sun (sh and map kinds; null for constant and sky,
+  // whose smooth gradients cosine sampling handles well).
+  const EquirectSampler* importance() const { return sampler_.empty() ? nullptr : &sampler_; }
+
   bool has_sun() const { return has_sun_; }
   glm::vec3 sun_direction() const { return sun_direction_; }
   float sun_cos_radius() const { return sun_cos_radius_; }
@@ -68,6 +75,7 @@ class EnvironmentLight {
   // sh
   int sh_order_ = 0;
   std::array<std::vector<float>, 3> sh_coefficients_;
+  EquirectSampler sampler_;
   // sun (sky only)
   bool has_sun_ = false;
   glm::vec3 sun_direction_{0.0f, 1.0f, 0.0f};

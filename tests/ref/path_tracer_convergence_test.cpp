@@ -2,6 +2,7 @@
 // from one surface point; its standard error comes from the estimator's own sample variance,
 // and the test accepts |mean - exact| <= 3 standard errors (and checks the error bar is tight
 // enough for that to mean something).
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -11,6 +12,9 @@
 #include "ref/path_tracer.h"
 #include "ref/path_tracer_lighting.h"
 #include "ref/sampling.h"
+#include "ref/sampling_environment.h"
+#include "sh/environment.h"
+#include "image/image.h"
 #include "scene/scene.h"
 
 namespace proxygi::ref {
@@ -93,6 +97,72 @@ TEST(PathTracerConvergence, DirectLightUnderSphereMatchesClosedForm) {
     for (int c = 0; c < 3; ++c)
       EXPECT_NEAR(colored.mean[c], albedo[c] * exact_irradiance / kPiD, 3.0 * colored.standard_error[c] + 1e-7);
   }
+}
+
+TEST(PathTracerConvergence, EnvironmentSamplingKeepsTheClosedForm) {
+  // The same closed form with lights that carry an importance sampler (NEE + MIS): a DC-only SH
+  // vector of a unit sky (L_00 = sqrt(4 pi)) and a uniform white equirect map rotated by 30 deg.
+  const float h = 1.0f, r = 0.6f;
+  const EmbreeScene scene = sphere_over_plane({0.0f, h, 0.0f}, r, 1000.0f, glm::vec3(0.7f));
+  sh::RgbSh dc;
+  dc.order = 3;
+  for (auto& channel : dc.channels) {
+    channel.assign(9, 0.0);
+    channel[0] = std::sqrt(4.0 * kPiD);
+  }
+  const EnvironmentLight sh_light = EnvironmentLight::spherical_harmonics(dc);
+  ASSERT_NE(sh_light.importance(), nullptr);
+  const float angle = 30.0f * float(kPiD) / 180.0f;
+  const glm::mat3 rotation(glm::vec3(std::cos(angle), 0, std::sin(angle)), glm::vec3(0, 1, 0),
+                           glm::vec3(-std::sin(angle), 0, std::cos(angle)));
+  const EnvironmentLight map_light =
+      EnvironmentLight::map(image::ImageF(32, 16, glm::vec4(1.0f)), 1.0f, rotation);
+  ASSERT_NE(map_light.importance(), nullptr);
+  std::uint32_t stream = 300;
+  for (const EnvironmentLight* light : {&sh_light, &map_light}) {
+    const PathTracer tracer(scene, *light, *light, PathTracerSettings{LightTransport::direct});
+    for (float x : {0.0f, 1.2f}) {
+      SCOPED_TRACE("x = " + std::to_string(x));
+      const Estimate e = estimate_radiance(tracer, {x, 0.0f, 0.0f}, glm::vec3(1.0f), 20000, stream++);
+      expect_within_three_standard_errors(e, irradiance_under_sphere(h, r, x) / kPiD, 0.005);
+    }
+  }
+}
+
+TEST(PathTracerSampling, EquirectSamplerPdfMatchesItsSamples) {
+  // A table with one bright texel band: the pdf integrates to 1 over the sphere, and sampled
+  // directions land in the bright band about as often as its probability says.
+  const int w = 16, hgt = 8;
+  std::vector<float> weights(std::size_t(w * hgt), 0.1f);
+  for (int x = 0; x < w; ++x) weights[std::size_t(2 * w + x)] = 50.0f;  // row 2: theta in [45, 67.5] deg
+  const EquirectSampler sampler(w, hgt, weights);
+  double integral = 0.0;
+  const int n = 200000;
+  for (int i = 0; i < n; ++i) {
+    SampleStream random(1u, 0u, std::uint32_t(i));
+    integral += sampler.pdf(sample_uniform_sphere(random.next_2d())) * 4.0 * kPiD / n;
+  }
+  EXPECT_NEAR(integral, 1.0, 0.01);
+  int in_band = 0;
+  double band_probability = 0.0;
+  for (int i = 0; i < n; ++i) {
+    SampleStream random(2u, 0u, std::uint32_t(i));
+    float pdf = 0.0f;
+    const glm::vec3 d = sampler.sample(random.next_2d(), pdf);
+    ASSERT_NEAR(glm::length(d), 1.0f, 1e-4f);
+    ASSERT_NEAR(pdf, sampler.pdf(d), 1e-3f * pdf);
+    const double theta = std::acos(std::clamp(double(d.y), -1.0, 1.0));
+    if (theta >= kPiD / 4.0 && theta < 3.0 * kPiD / 8.0) ++in_band;
+  }
+  // Probability of row 2: its weight * sin(theta_center) share.
+  double total = 0.0, band = 0.0;
+  for (int y = 0; y < hgt; ++y) {
+    const double row = (y == 2 ? 50.0 : 0.1) * w * std::sin(kPiD * (y + 0.5) / hgt);
+    total += row;
+    if (y == 2) band = row;
+  }
+  band_probability = band / total;
+  EXPECT_NEAR(double(in_band) / n, band_probability, 0.01);
 }
 
 TEST(PathTracerConvergence, SunIsCountedOnceWithMis) {
