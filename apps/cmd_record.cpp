@@ -1,0 +1,243 @@
+// proxygi record [SCENE] -o DIR [--frames A:B] [--shard I/N] [--exr] [--mp4|--no-mp4] [--aov]
+//                [--width W --height H] [--device NAME|INDEX]
+// Renders a scene headless into DIR/frame_%05d.png (+ .exr, + aov/, + video.mp4), resumably:
+// frames whose files exist are skipped, every file is written atomically, and shards split the
+// frame range so independent processes fill one folder with the bytes a single run would write.
+#include <algorithm>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <deque>
+#include <memory>
+#include <optional>
+
+#include "apps/commands.h"
+#include "apps/record_output.h"
+#include "apps/record_plan.h"
+#include "apps/record_progress.h"
+#include "apps/record_proxies.h"
+#include "apps/record_video.h"
+#include "gpu/scene_renderer.h"
+#include "scene/camera.h"
+#include "scene/scene_defaults.h"
+#include "scene/scene_parse.h"
+
+namespace proxygi::app {
+namespace {
+
+struct RecordArgs {
+  std::string scene;  // file, "default", "crowd", or empty (default)
+  std::string output;
+  std::string frames;
+  std::string shard;
+  bool exr = false;
+  bool mp4 = false;
+  bool no_mp4 = false;
+  bool aov = false;
+  int width = 0;   // 0: the scene's
+  int height = 0;
+  std::string device;
+};
+
+volatile std::sig_atomic_t g_interrupted = 0;
+extern "C" void on_interrupt(int) { g_interrupted = 1; }
+
+// A file by that name wins over the built-in names, so a scene called "default" still loads.
+Result<scene::Scene> load_record_scene(const std::string& name) {
+  std::error_code error;
+  const bool is_file = !name.empty() && std::filesystem::exists(name, error);
+  if (!is_file && (name.empty() || name == "default")) return scene::default_scene();
+  if (!is_file && name == "crowd") return scene::crowd_scene();
+  return scene::load_scene(name);
+}
+
+bool has_format(const scene::Output& output, scene::OutputFormat format) {
+  return std::find(output.formats.begin(), output.formats.end(), format) != output.formats.end();
+}
+
+struct RecordPlan {
+  std::filesystem::path dir;
+  bool exr = false;
+  bool aov = false;
+  std::vector<int> frames;  // this process's share, not yet on disk
+  int skipped = 0;
+};
+
+// Renders plan.frames with up to slot_count frames in flight: frame t+1 is prepared and
+// submitted before frame t's files are written. The renderer's ring slot is frame mod slots, so
+// a frame whose slot is still busy (shards step by N) waits for the older frame first.
+Status render_in_flight(gpu::SceneRenderer& renderer, const RecordPlan& plan, RecordProgress& progress) {
+  const scene::Output& output = renderer.scene().output;
+  const std::size_t slots = std::max<std::size_t>(renderer.frame().slot_count(), 1);
+  std::deque<int> in_flight;
+  auto finish_oldest = [&]() -> Status {
+    const int frame = in_flight.front();
+    in_flight.pop_front();
+    auto finished = renderer.finish_frame(frame);
+    if (!finished) return finished.error();
+    if (Status s = write_frame_files(plan.dir, frame, finished->ldr, finished->hdr, output.width, output.height, plan.exr); !s)
+      return s;
+    progress.frame_rendered(frame, finished->statistics.proxies, finished->statistics.cpu_prepare_ms);
+    return {};
+  };
+  auto slot_busy = [&](int frame) {
+    for (int other : in_flight)
+      if (std::size_t(other) % slots == std::size_t(frame) % slots) return true;
+    return false;
+  };
+  for (int frame : plan.frames) {
+    if (g_interrupted) break;
+    while (!in_flight.empty() && (in_flight.size() >= slots || slot_busy(frame)))
+      if (Status s = finish_oldest(); !s) return s;
+    if (Status s = renderer.begin_frame(frame); !s) return s;
+    in_flight.push_back(frame);
+  }
+  while (!in_flight.empty())
+    if (Status s = finish_oldest(); !s) return s;
+  return {};
+}
+
+// --aov: one frame at a time, since the intermediate buffers hold only the latest frame.
+Status render_with_aovs(gpu::SceneRenderer& renderer, const RecordPlan& plan, RecordProgress& progress) {
+  const scene::Scene& scene = renderer.scene();
+  auto proxies = SceneProxies::create(scene, assets_dir());
+  if (!proxies) return make_error("proxies overlay: " + proxies.message());
+  for (int frame : plan.frames) {
+    if (g_interrupted) break;
+    auto finished = renderer.render(frame);
+    if (!finished) return finished.error();
+    if (Status s = write_frame_files(plan.dir, frame, finished->ldr, finished->hdr, scene.output.width,
+                                     scene.output.height, plan.exr);
+        !s)
+      return s;
+    auto spheres = (*proxies)->spheres(frame);
+    if (!spheres) return spheres.error();
+    const auto camera = scene::evaluate_scene_camera(scene, scene::frame_time_s(scene.output, frame));
+    const image::ImageF final_frame = ldr_to_linear(finished->ldr, scene.output.width, scene.output.height);
+    if (Status s = write_aovs(plan.dir, frame, renderer.frame(), final_frame, *spheres, camera); !s) return s;
+    progress.frame_rendered(frame, finished->statistics.proxies, finished->statistics.cpu_prepare_ms);
+  }
+  return {};
+}
+
+// Encodes DIR/video.mp4 when every frame of the range is on disk. Missing ffmpeg only warns.
+int encode_when_complete(const RecordPlan& plan, const FrameRange& range, double fps, bool rendered_any) {
+  for (int frame = range.first; frame <= range.last; ++frame)
+    if (!frame_done(plan.dir, frame, false, false)) {
+      std::fprintf(stderr, "record: frame %d is missing; video.mp4 not encoded (run again to finish)\n", frame);
+      return kExitOk;
+    }
+  std::error_code error;
+  if (!rendered_any && std::filesystem::exists(video_file(plan.dir), error)) return kExitOk;  // already up to date
+  const auto ffmpeg = find_program("ffmpeg");
+  if (!ffmpeg) {
+    std::fprintf(stderr, "proxygi: warning: ffmpeg not found on PATH; video.mp4 not encoded\n");
+    return kExitOk;
+  }
+  if (Status s = encode_video({*ffmpeg, plan.dir, range.first, range.last - range.first + 1, fps}); !s)
+    return fail_runtime("video.mp4: " + s.message());
+  std::fprintf(stderr, "record: wrote %s\n", video_file(plan.dir).c_str());
+  return kExitOk;
+}
+
+int run_record(const RecordArgs& args) {
+  Result<scene::Scene> loaded = load_record_scene(args.scene);
+  if (!loaded) return fail_bad_input(loaded.message());
+  scene::Scene scene = std::move(*loaded);
+  if (args.width > 0) scene.output.width = args.width;
+  if (args.height > 0) scene.output.height = args.height;
+
+  std::optional<FrameRange> requested;
+  if (!args.frames.empty()) {
+    auto range = parse_frame_range(args.frames);
+    if (!range) return fail_bad_input(range.message());
+    requested = *range;
+  }
+  Shard shard;
+  if (!args.shard.empty()) {
+    auto parsed = parse_shard(args.shard);
+    if (!parsed) return fail_bad_input(parsed.message());
+    shard = *parsed;
+  }
+  auto share = plan_frames(scene.output, requested, shard);
+  if (!share) return fail_bad_input(share.message());
+
+  RecordPlan plan;
+  plan.dir = args.output;
+  plan.exr = args.exr || has_format(scene.output, scene::OutputFormat::exr);
+  plan.aov = args.aov;
+  std::error_code error;
+  std::filesystem::create_directories(plan.dir, error);
+  if (error) return fail_runtime(plan.dir.string() + ": cannot create the output folder: " + error.message());
+  for (int frame : *share) {
+    if (frame_done(plan.dir, frame, plan.exr, plan.aov)) ++plan.skipped;
+    else plan.frames.push_back(frame);
+  }
+
+  std::signal(SIGINT, on_interrupt);
+  std::signal(SIGTERM, on_interrupt);
+  std::optional<RecordProgress> progress;
+  if (plan.frames.empty()) {
+    progress.emplace(0, plan.skipped);  // resume of a finished run: no device needed
+  } else {
+    for (const scene::Character& character : scene.characters)
+      if (scene::is_builtin_mannequin(character.model) && !std::filesystem::exists(assets_dir() / "mannequin.glb", error))
+        return fail_runtime((assets_dir() / "mannequin.glb").string() +
+                            " is missing: create it with `proxygi mannequin -o <assets>/mannequin.glb` or point "
+                            "$PROXYGI_ASSETS at a folder holding it");
+    auto context = gpu::Context::create({.device_request = args.device});
+    if (!context) return fail_runtime(context.message());
+    auto renderer = gpu::SceneRenderer::create(**context, scene, {assets_dir(), true});
+    if (!renderer) return fail_runtime(renderer.message());
+    progress.emplace(int(plan.frames.size()), plan.skipped);
+    const Status rendered = plan.aov ? render_with_aovs(**renderer, plan, *progress)
+                                     : render_in_flight(**renderer, plan, *progress);
+    if (!rendered) {
+      progress->finish();
+      return fail_runtime(rendered.message());
+    }
+  }
+  progress->finish();
+  if (g_interrupted) return fail_runtime("interrupted; finished frames are kept, run the same command to resume");
+
+  const bool want_mp4 = (args.mp4 || has_format(scene.output, scene::OutputFormat::mp4)) && !args.no_mp4;
+  if (!want_mp4) return kExitOk;
+  if (!args.shard.empty()) {
+    std::fprintf(stderr, "record: shards do not encode video; when all shards are done, run again without --shard\n");
+    return kExitOk;
+  }
+  return encode_when_complete(plan, requested.value_or(scene_frame_range(scene.output)), scene.output.fps,
+                              !plan.frames.empty());
+}
+
+}  // namespace
+
+void add_record_command(CLI::App& app, CommandRunner& runner) {
+  auto args = std::make_shared<RecordArgs>();
+  CLI::App* command = app.add_subcommand(
+      "record",
+      "Render a scene headless to DIR/frame_%05d.png (+ .exr, + video.mp4). Resumable: frames whose files "
+      "exist are skipped; files are written atomically.");
+  command->add_option("scene", args->scene,
+                      "Scene JSON file, or 'default' / 'crowd' for a built-in scene (default: 'default')");
+  command->add_option("-o,--output", args->output, "Output folder (created if missing)")->required();
+  command->add_option("--frames", args->frames,
+                      "A:B, first and last frame (inclusive) within the scene's output range (default: all)");
+  command->add_option("--shard", args->shard,
+                      "I/N: render only frames f of the range with (f - A) mod N == I (0-based I < N), A the "
+                      "range's first frame; N processes fill one folder with the files of a single run");
+  command->add_flag("--exr", args->exr, "Also write linear float DIR/frame_%05d.exr");
+  auto* mp4 = command->add_flag("--mp4", args->mp4,
+                                "Encode DIR/video.mp4 with ffmpeg once every frame exists (also when the scene's "
+                                "formats include mp4); shards never encode");
+  command->add_flag("--no-mp4", args->no_mp4, "Do not encode video even if the scene asks for it")->excludes(mp4);
+  command->add_flag("--aov", args->aov,
+                    "Render one frame at a time and write DIR/aov/frame_%05d_{receivers,occlusion_dc,direct,"
+                    "indirect,upsampled}.exr and _proxies.png");
+  command->add_option("--width", args->width, "Override the scene's output width")->check(CLI::Range(16, 8192));
+  command->add_option("--height", args->height, "Override the scene's output height")->check(CLI::Range(16, 8192));
+  add_device_option(*command, args->device);
+  command->callback([args, &runner] { runner = [args] { return run_record(*args); }; });
+}
+
+}  // namespace proxygi::app
