@@ -1,0 +1,212 @@
+// proxygi reference SCENE --frame F --spp N -o OUT.exr [--mode direct|one-bounce|multi-bounce]
+//   [--lighting sh|full] [--width W --height H] [--seed S] [--threads T] [--accumulate]
+//   [--guided-filter [--filter-radius R]]
+// Path-traces one frame of a scene with Embree (the ground truth of the accuracy study) and
+// writes OUT.exr plus its feature and statistics files (ref/reference_render_io.h lists them).
+// SCENE is a scene file, or "default" / "crowd" for a built-in scene (a file by that name wins).
+// Bad arguments or scenes exit 2, failures while rendering or writing exit 1.
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "apps/commands.h"
+#include "image/image.h"
+#include "ref/embree_scene.h"
+#include "ref/embree_scene_load.h"
+#include "ref/path_tracer.h"
+#include "ref/path_tracer_lighting.h"
+#include "ref/reference_render.h"
+#include "ref/reference_render_io.h"
+#include "scene/camera.h"
+#include "scene/scene_defaults.h"
+#include "scene/scene_parse.h"
+
+namespace proxygi::app {
+namespace {
+
+struct ReferenceArgs {
+  std::string scene = "default";
+  int frame = 0;
+  int spp = 64;
+  std::string output;
+  std::string mode = "one-bounce";
+  std::string lighting = "sh";
+  int width = 0;   // 0: the scene's output size
+  int height = 0;
+  std::uint32_t seed = 0;
+  int threads = 0;
+  bool accumulate = false;
+  bool guided_filter = false;
+  int filter_radius = 24;
+  std::string preview;  // optional PNG of OUT.exr (clamped, sRGB), for a quick look
+};
+
+Result<scene::Scene> scene_from_argument(const std::string& name) {
+  std::error_code error;
+  const bool is_file = std::filesystem::is_regular_file(name, error);
+  if (!is_file && name == "default") return scene::default_scene();
+  if (!is_file && name == "crowd") return scene::crowd_scene();
+  return scene::load_scene(name);
+}
+
+// The bundled assets folder (builtin:mannequin): $PROXYGI_ASSETS, else the build's assets folder.
+std::filesystem::path reference_assets_dir() {
+  if (const char* overridden = std::getenv("PROXYGI_ASSETS")) return overridden;
+#ifdef PROXYGI_ASSETS_DIR
+  return PROXYGI_ASSETS_DIR;
+#else
+  return "assets";
+#endif
+}
+
+std::string format_duration(double seconds) {
+  char text[32];
+  if (seconds >= 3600.0) std::snprintf(text, sizeof text, "%dh%02dm", int(seconds / 3600.0), int(std::fmod(seconds, 3600.0) / 60.0));
+  else if (seconds >= 60.0) std::snprintf(text, sizeof text, "%dm%02ds", int(seconds / 60.0), int(std::fmod(seconds, 60.0)));
+  else std::snprintf(text, sizeof text, "%.1fs", seconds);
+  return text;
+}
+
+int run_reference(const ReferenceArgs& args) {
+  auto loaded = scene_from_argument(args.scene);
+  if (!loaded) return fail_bad_input(loaded.message());
+  const scene::Scene& scene = *loaded;
+  if (args.frame < 0) return fail_bad_input("--frame must be >= 0");
+  const int width = args.width > 0 ? args.width : scene.output.width;
+  const int height = args.height > 0 ? args.height : scene.output.height;
+
+  ref::PathTracerSettings settings;
+  if (args.mode == "direct") settings.transport = ref::LightTransport::direct;
+  else if (args.mode == "one-bounce") settings.transport = ref::LightTransport::one_bounce;
+  else settings.transport = ref::LightTransport::multi_bounce;
+  const ref::LightingKind lighting_kind = args.lighting == "sh" ? ref::LightingKind::sh : ref::LightingKind::full;
+
+  ref::ReferenceRecord record;
+  record.scene = args.scene;
+  record.frame = args.frame;
+  record.time_s = scene::frame_time_s(scene.output, args.frame);
+  record.width = width;
+  record.height = height;
+  record.transport = args.mode;
+  record.lighting = args.lighting;
+  record.sh_order = scene.render.sh_order;
+  record.seed = args.seed;
+  record.guided_filter = args.guided_filter;
+
+  const ref::ReferencePaths paths = ref::reference_paths(args.output);
+  std::optional<ref::SampleSums> previous;
+  if (args.accumulate && std::filesystem::exists(paths.record)) {
+    auto old = ref::read_record(paths.record);
+    if (!old) return fail_bad_input(old.message());
+    if (std::string why = ref::record_mismatch(*old, record); !why.empty())
+      return fail_bad_input("--accumulate: " + paths.record.string() + " describes another image (" + why + ")");
+    auto sums = ref::read_previous_sums(paths, *old);
+    if (!sums) return fail_bad_input("--accumulate: " + sums.message());
+    previous = std::move(*sums);
+    record.samples = old->samples;
+    record.seconds = old->seconds;
+    record.rays = old->rays;
+  }
+
+  auto assets = ref::load_scene_assets(scene, reference_assets_dir());
+  if (!assets) return fail_bad_input(assets.message());
+  auto meshes = ref::pose_scene_meshes(scene, *assets, record.time_s);
+  if (!meshes) return fail_bad_input(meshes.message());
+  auto geometry = ref::EmbreeScene::build(std::move(*meshes));
+  if (!geometry) return fail_runtime(geometry.message());
+  auto lighting = ref::EnvironmentLight::from_scene(scene, lighting_kind);
+  if (!lighting) return fail_bad_input(lighting.message());
+  auto background = ref::EnvironmentLight::from_scene(scene, ref::LightingKind::full);
+  if (!background) return fail_bad_input(background.message());
+  const ref::PathTracer tracer(*geometry, *lighting, *background, settings);
+  const scene::CameraState camera = scene::evaluate_scene_camera(scene, record.time_s);
+
+  std::fprintf(stderr, "reference: %s frame %d (t = %.3f s), %d triangles, %dx%d, %d spp (samples %u..%u), %s, %s lighting\n",
+               args.scene.c_str(), args.frame, record.time_s, int(geometry->triangle_count()), width, height, args.spp,
+               record.samples, record.samples + std::uint32_t(args.spp) - 1, args.mode.c_str(), args.lighting.c_str());
+  ref::RenderJob job;
+  job.width = width;
+  job.height = height;
+  job.spp = args.spp;
+  job.first_sample = record.samples;
+  job.seed = args.seed;
+  job.threads = args.threads;
+  ref::RenderStats stats;
+  auto progress = [](const ref::RenderProgress& p) {
+    std::fprintf(stderr, "\r  %5.1f%%  %s elapsed  ETA %s  %.2f Mrays/s   ", 100.0 * p.tiles_done / std::max(p.tiles_total, 1),
+                 format_duration(p.elapsed_s).c_str(), format_duration(p.eta_s).c_str(),
+                 p.elapsed_s > 0.0 ? double(p.rays) / p.elapsed_s * 1e-6 : 0.0);
+    std::fflush(stderr);
+  };
+  auto sums = ref::render_samples(tracer, camera, job, &stats, progress);
+  std::fprintf(stderr, "\n");
+  if (!sums) return fail_bad_input(sums.message());
+  if (previous) {
+    if (Status s = previous->merge(*sums); !s) return fail_bad_input("--accumulate: " + s.message());
+    sums = std::move(*previous);
+  }
+  record.samples = sums->samples;
+  record.seconds += stats.seconds;
+  record.rays += stats.rays;
+
+  const ref::ReferenceImages images = ref::to_images(*sums);
+  const ref::PixelFeatures features = ref::render_features(*geometry, camera, width, height);
+  std::optional<image::ImageF> filtered;
+  if (args.guided_filter) {
+    ref::GuidedFilterSettings filter;
+    filter.radius = args.filter_radius;
+    filter.depth_scale = scene.ground.enabled ? scene.ground.size : 20.0f;
+    auto result = ref::guided_filter_reference(images, features, filter);
+    if (!result) return fail_runtime(result.message());
+    filtered = std::move(*result);
+  }
+  if (Status s = ref::write_reference(paths, images, features, record, filtered ? &*filtered : nullptr); !s)
+    return fail_runtime(s.message());
+  if (!args.preview.empty()) {
+    const image::ImageF& shown = filtered ? *filtered : images.radiance;
+    if (Status s = image::write_png(args.preview, shown); !s) return fail_runtime(s.message());
+  }
+  std::printf("%s: %u spp, %.2f s tracing (%.1f ms per spp), %.3g rays, %.2f Mrays/s\n", paths.radiance.string().c_str(),
+              record.samples, stats.seconds, 1e3 * stats.seconds / args.spp, double(stats.rays), stats.mrays_per_second());
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_reference_command(CLI::App& app, CommandRunner& runner) {
+  auto args = std::make_shared<ReferenceArgs>();
+  CLI::App* command = app.add_subcommand("reference", "Path-trace a ground-truth frame with Embree");
+  command->add_option("scene", args->scene, "Scene JSON file, or 'default' / 'crowd' for a built-in scene")
+      ->required();
+  command->add_option("--frame", args->frame, "Frame index (scene time = frame / fps)")->required();
+  command->add_option("--spp", args->spp, "Samples (paths) per pixel to trace in this run")
+      ->required()
+      ->check(CLI::Range(1, 1 << 24));
+  command->add_option("-o,--output", args->output, "Output radiance EXR (feature files are written next to it)")
+      ->required();
+  command->add_option("--mode", args->mode, "Light transport: direct, one-bounce or multi-bounce")
+      ->check(CLI::IsMember({"direct", "one-bounce", "multi-bounce"}))
+      ->capture_default_str();
+  command->add_option("--lighting", args->lighting,
+                      "sh: the environment band-limited to the scene's SH order and windowed, as the proxy "
+                      "method sees it; full: the environment itself (sun sampled with MIS)")
+      ->check(CLI::IsMember({"sh", "full"}))
+      ->capture_default_str();
+  command->add_option("--width", args->width, "Image width (default: the scene's)")->check(CLI::Range(1, 16384));
+  command->add_option("--height", args->height, "Image height (default: the scene's)")->check(CLI::Range(1, 16384));
+  command->add_option("--seed", args->seed, "Random seed; the same seed gives the same image")->capture_default_str();
+  command->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(0, 1024));
+  command->add_flag("--accumulate", args->accumulate,
+                    "Continue from OUT's previous samples (same scene, frame, size, mode, lighting and seed)");
+  command->add_flag("--guided-filter", args->guided_filter,
+                    "Guided-filter the indirect part by normal and depth (the denoised low-spp method)");
+  command->add_option("--filter-radius", args->filter_radius, "Guided filter window radius in pixels")
+      ->check(CLI::Range(1, 256))
+      ->capture_default_str();
+  command->add_option("--preview", args->preview, "Also write this PNG of the radiance (clamped to [0, 1], sRGB)");
+  command->callback([args, &runner] { runner = [args] { return run_reference(*args); }; });
+}
+
+}  // namespace proxygi::app
