@@ -30,6 +30,7 @@ void add_mannequin_command(CLI::App& app, CommandRunner& runner);  // cmd_manneq
 void add_fit_command(CLI::App& app, CommandRunner& runner);      // cmd_fit.cpp
 void add_compare_command(CLI::App& app, CommandRunner& runner);  // cmd_compare.cpp
 void add_bench_command(CLI::App& app, CommandRunner& runner);    // cmd_bench.cpp
+void add_record_command(CLI::App& app, CommandRunner& runner);   // cmd_record.cpp
 void add_reference_command(CLI::App& app, CommandRunner& runner);  // cmd_reference.cpp
 
 // `proxygi bench <study>` subcommands, one file each (apps/bench_<name>.cpp).

@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
   add_fit_command(app, runner);
   add_compare_command(app, runner);
   add_bench_command(app, runner);
+  add_record_command(app, runner);
   add_reference_command(app, runner);
 
   try {
