@@ -2,6 +2,7 @@
 // The proxygi CLI: one file per subcommand, each registering itself on the root app. A command's
 // callback stores the work to run in `runner`; main() runs it after parsing and returns its exit
 // code. Exit codes: 0 success, 1 runtime failure, 2 usage error or bad input.
+#include <filesystem>
 #include <functional>
 #include <string>
 
@@ -19,6 +20,10 @@ inline constexpr int kExitBadInput = 2;
 int fail_bad_input(const std::string& message);
 int fail_runtime(const std::string& message);
 
+// The folder of the bundled assets (assets/mannequin.glb, scenes): $PROXYGI_ASSETS when set,
+// else the source tree's assets/ folder this binary was built from.
+std::filesystem::path assets_dir();
+
 // Adds --device NAME|INDEX to a subcommand (falls back to $PROXYGI_DEVICE when not given).
 void add_device_option(CLI::App& command, std::string& device);
 
@@ -34,6 +39,7 @@ void add_record_command(CLI::App& app, CommandRunner& runner);   // cmd_record.c
 void add_reference_command(CLI::App& app, CommandRunner& runner);  // cmd_reference.cpp
 
 // `proxygi bench <study>` subcommands, one file each (apps/bench_<name>.cpp).
-void add_bench_sh_command(CLI::App& bench, CommandRunner& runner);  // bench_sh.cpp
+void add_bench_sh_command(CLI::App& bench, CommandRunner& runner);     // bench_sh.cpp
+void add_bench_frame_command(CLI::App& bench, CommandRunner& runner);  // bench_frame.cpp
 
 }  // namespace proxygi::app

@@ -4,6 +4,9 @@
 
 #include "apps/commands.h"
 
+#ifndef PROXYGI_ASSETS_DIR
+#define PROXYGI_ASSETS_DIR "assets"
+#endif
 #ifndef PROXYGI_VERSION
 #define PROXYGI_VERSION "unknown"
 #endif
@@ -18,6 +21,11 @@ int fail_bad_input(const std::string& message) {
 int fail_runtime(const std::string& message) {
   std::fprintf(stderr, "proxygi: %s\n", message.c_str());
   return kExitFailure;
+}
+
+std::filesystem::path assets_dir() {
+  if (const char* overridden = std::getenv("PROXYGI_ASSETS")) return overridden;
+  return PROXYGI_ASSETS_DIR;
 }
 
 void add_device_option(CLI::App& command, std::string& device) {

@@ -2,7 +2,8 @@
 // Indirect accumulation (frame step 6), order 3 (paper §5, averaged operator D by its polynomial
 // fit): E_ind = ξ_p Σ_i (albedo_i/π) κ_i (V_i · H(N)), κ_i = rot(D(s_i), d_i) · L̃,
 // ξ_p = clamp((V_p)_0 / (ω_p/√4π), 0, 1) with (V_p)_0 = √4π − (O_p)_0 from the exponentiation.
-// Output per receiver: (E_r, E_g, E_b, ω_p). CPU twin: render::accumulate_indirect.
+// Output per receiver: (E_r, E_g, E_b, ω_p), and the packed (E_direct + E_indirect, eye depth)
+// upsampling reads. CPU twin: render::accumulate_indirect.
 #extension GL_GOOGLE_include_directive : require
 #define FRAME_TILE_CULLING
 #include "frame_common.glsl"
@@ -15,6 +16,8 @@ layout(std140, set = 0, binding = 2) uniform Proxies { ProxySphere proxies[kMaxP
 layout(std430, set = 0, binding = 3) readonly buffer VisibilityTable { float visibility_table[]; };
 layout(std430, set = 0, binding = 4) readonly buffer Direct { vec4 direct[]; };
 layout(std430, set = 0, binding = 5) writeonly buffer Indirect { vec4 indirect[]; };
+// What upsampling reads per tap, packed into one vec4: (E_direct + E_indirect, eye depth).
+layout(std430, set = 0, binding = 6) writeonly buffer Shaded { vec4 shaded[]; };
 
 float influence_fade(float s, float eta, int rows) {
   float width = 4.0 / float(rows - 1);
@@ -39,6 +42,7 @@ void main() {
   if (!inside) return;
   if (!valid) {
     indirect[index] = vec4(0.0);
+    shaded[index] = r.position_depth.w > 0.0 ? vec4(direct[index].rgb, r.position_depth.w) : vec4(0.0);
     return;
   }
   vec3 normal = r.normal.xyz;
@@ -89,4 +93,5 @@ void main() {
     irradiance = summed * clamp(covered_dc * kSqrtFourPi / solid_angle_sum, 0.0, 1.0);
   }
   indirect[index] = vec4(irradiance, solid_angle_sum);
+  shaded[index] = vec4(direct[index].rgb + irradiance, r.position_depth.w);
 }

@@ -11,9 +11,8 @@ layout(std140, set = 0, binding = 0) uniform Frame { FrameConstants frame; };
 layout(set = 0, binding = 1, rgba32f) uniform readonly image2D position_depth_image;
 layout(set = 0, binding = 2, rgba32f) uniform readonly image2D normal_image;
 layout(std430, set = 0, binding = 3) readonly buffer Receivers { Receiver receivers[]; };
-layout(std430, set = 0, binding = 4) readonly buffer Direct { vec4 direct[]; };
-layout(std430, set = 0, binding = 5) readonly buffer Indirect { vec4 indirect[]; };
-layout(std430, set = 0, binding = 6) writeonly buffer Irradiance { vec4 irradiance[]; };
+layout(std430, set = 0, binding = 4) readonly buffer Shaded { vec4 shaded[]; };  // (E, eye depth)
+layout(std430, set = 0, binding = 5) writeonly buffer Irradiance { vec4 irradiance[]; };
 
 void main() {
   uvec2 pixel = gl_GlobalInvocationID.xy;
@@ -43,19 +42,20 @@ void main() {
     ivec2 offset = ivec2(tap & 1, tap >> 1);
     ivec2 source = clamp(base + offset, ivec2(0), receiver_size - 1);
     uint index = uint(source.y * receiver_size.x + source.x);
-    Receiver r = receivers[index];
-    if (r.position_depth.w <= 0.0) continue;
-    vec3 value = direct[index].rgb + indirect[index].rgb;
+    vec4 tap_shaded = shaded[index];  // one read for value and depth; the normal only when needed
+    float tap_depth = tap_shaded.w;
+    if (tap_depth <= 0.0) continue;
+    vec3 value = tap_shaded.rgb;
     float weight = (offset.x == 1 ? fraction.x : 1.0 - fraction.x) * (offset.y == 1 ? fraction.y : 1.0 - fraction.y);
     bilinear_sum += weight;
     if (bilateral) {
-      float facing = max(dot(normal, r.normal.xyz), 0.0);
-      weight *= pow(facing, 32.0) / (epsilon + abs(depth - r.position_depth.w));
+      float facing = max(dot(normal, receivers[index].normal.xyz), 0.0);
+      weight *= pow(facing, 32.0) / (epsilon + abs(depth - tap_depth));
       weight *= epsilon;
     }
     total += weight * value;
     weight_sum += weight;
-    float gap = abs(r.position_depth.w - depth);
+    float gap = abs(tap_depth - depth);
     if (gap < nearest_gap) {
       nearest_gap = gap;
       nearest_value = value;

@@ -64,8 +64,8 @@ Result<FramePipelines> FramePipelines::create(const Context& context, int order)
       {&out.receivers, "receivers.comp", {kUniform, kImage, kImage, kStorage}, 0},
       {&out.shadow, "shadow_gather.comp" + suffix, {kUniform, kStorage, kUniform, kStorage, kStorage}, 0},
       {&out.exponentiate, "exponentiate.comp" + suffix, {kUniform, kStorage, kStorage, kStorage, kStorage, kStorage}, 0},
-      {&out.indirect, "indirect.comp", {kUniform, kStorage, kUniform, kStorage, kStorage, kStorage}, 0},
-      {&out.upsample, "upsample.comp", {kUniform, kImage, kImage, kStorage, kStorage, kStorage, kStorage}, 0},
+      {&out.indirect, "indirect.comp", {kUniform, kStorage, kUniform, kStorage, kStorage, kStorage, kStorage}, 0},
+      {&out.upsample, "upsample.comp", {kUniform, kImage, kImage, kStorage, kStorage, kStorage}, 0},
       {&out.composite, "composite.comp", {kUniform, kImage, kImage, kStorage, kStorage, kStorage, kStorage},
        sizeof(gpu_layout::CompositePush)},
   };

@@ -5,8 +5,9 @@
 //   receivers    position+depth, normal images           → receivers (1/k)
 //   shadow       receivers, proxies, log-occlusion table → log-occlusion SH per receiver
 //   exponentiate receivers, log SH, OL table, LH cubes   → direct E and (O_p)_0 per receiver
-//   indirect     receivers, proxies, visibility table, direct → indirect E and ω_p per receiver
-//   upsample     G-buffer guides, receivers, direct, indirect → irradiance at display resolution
+//   indirect     receivers, proxies, visibility table, direct → indirect E and ω_p per receiver,
+//                and the packed shaded buffer (E_direct + E_indirect, eye depth)
+//   upsample     G-buffer guides, receiver normals, shaded → irradiance at display resolution
 //   composite    G-buffer, irradiance, environment       → HDR radiance and tonemapped sRGB
 #include <array>
 

@@ -90,6 +90,7 @@ Result<std::unique_ptr<SoftGiFrame>> SoftGiFrame::create(Context& context, const
       {&frame->log_occlusion_, receivers * coefficients * sizeof(float)},
       {&frame->direct_, receivers * sizeof(glm::vec4)},
       {&frame->indirect_, receivers * sizeof(glm::vec4)},
+      {&frame->shaded_, receivers * sizeof(glm::vec4)},
       {&frame->irradiance_, pixels * sizeof(glm::vec4)},
       {&frame->hdr_, pixels * sizeof(glm::vec4)},
       {&frame->ldr_, pixels * sizeof(std::uint32_t)},
@@ -305,6 +306,7 @@ void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot, Fram
           .storage_buffer(3, visibility_table_)
           .storage_buffer(4, direct_)
           .storage_buffer(5, indirect_)
+          .storage_buffer(6, shaded_)
           .push(context_, commands, pipelines_.indirect);
       dispatch_2d(receiver_width, receiver_height);
       memory_barrier(commands);
@@ -319,9 +321,8 @@ void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot, Fram
           .storage_image(1, position_depth_.view())
           .storage_image(2, normal_.view())
           .storage_buffer(3, receivers_)
-          .storage_buffer(4, direct_)
-          .storage_buffer(5, indirect_)
-          .storage_buffer(6, irradiance_)
+          .storage_buffer(4, shaded_)
+          .storage_buffer(5, irradiance_)
           .push(context_, commands, pipelines_.upsample);
       dispatch_2d(width, height);
       memory_barrier(commands);

@@ -112,7 +112,7 @@ class SoftGiFrame {
   int order_ = 4;
   FramePipelines pipelines_;
   Image position_depth_, normal_, albedo_, depth_;
-  Buffer receivers_, log_occlusion_, direct_, indirect_, irradiance_, hdr_, ldr_;
+  Buffer receivers_, log_occlusion_, direct_, indirect_, shaded_, irradiance_, hdr_, ldr_;
   Buffer log_table_, visibility_table_, optimal_linear_, lighting_cube_, environment_;
   std::uint32_t environment_width_ = 0, environment_height_ = 0;
   std::vector<Slot> slots_;
