@@ -96,6 +96,11 @@ int run_reference(const ReferenceArgs& args) {
   record.guided_filter = args.guided_filter;
 
   const ref::ReferencePaths paths = ref::reference_paths(args.output);
+  if (const std::filesystem::path folder = paths.radiance.parent_path(); !folder.empty()) {
+    std::error_code error;
+    std::filesystem::create_directories(folder, error);
+    if (error) return fail_runtime(folder.string() + ": cannot create the output folder: " + error.message());
+  }
   std::optional<ref::SampleSums> previous;
   if (args.accumulate && std::filesystem::exists(paths.record)) {
     auto old = ref::read_record(paths.record);
