@@ -7,7 +7,6 @@
 // Bad arguments or scenes exit 2, failures while rendering or writing exit 1.
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <string>
 
@@ -49,16 +48,6 @@ Result<scene::Scene> scene_from_argument(const std::string& name) {
   if (!is_file && name == "default") return scene::default_scene();
   if (!is_file && name == "crowd") return scene::crowd_scene();
   return scene::load_scene(name);
-}
-
-// The bundled assets folder (builtin:mannequin): $PROXYGI_ASSETS, else the build's assets folder.
-std::filesystem::path reference_assets_dir() {
-  if (const char* overridden = std::getenv("PROXYGI_ASSETS")) return overridden;
-#ifdef PROXYGI_ASSETS_DIR
-  return PROXYGI_ASSETS_DIR;
-#else
-  return "assets";
-#endif
 }
 
 std::string format_duration(double seconds) {
@@ -115,7 +104,7 @@ int run_reference(const ReferenceArgs& args) {
     record.rays = old->rays;
   }
 
-  auto assets = ref::load_scene_assets(scene, reference_assets_dir());
+  auto assets = ref::load_scene_assets(scene, assets_dir());
   if (!assets) return fail_bad_input(assets.message());
   auto meshes = ref::pose_scene_meshes(scene, *assets, record.time_s);
   if (!meshes) return fail_bad_input(meshes.message());
