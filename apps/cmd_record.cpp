@@ -15,7 +15,6 @@
 #include "apps/record_output.h"
 #include "apps/record_plan.h"
 #include "apps/record_progress.h"
-#include "apps/record_proxies.h"
 #include "apps/record_video.h"
 #include "gpu/scene_renderer.h"
 #include "scene/camera.h"
@@ -64,8 +63,8 @@ struct RecordPlan {
 };
 
 // Renders plan.frames with up to slot_count frames in flight: frame t+1 is prepared and
-// submitted before frame t's files are written. The renderer's ring slot is frame mod slots, so
-// a frame whose slot is still busy (shards step by N) waits for the older frame first.
+// submitted before frame t's files are written. The renderer takes ring slots round-robin, so
+// finishing the oldest frame always frees the next slot, whatever the frame numbers.
 Status render_in_flight(gpu::SceneRenderer& renderer, const RecordPlan& plan, RecordProgress& progress) {
   const scene::Output& output = renderer.scene().output;
   const std::size_t slots = std::max<std::size_t>(renderer.frame().slot_count(), 1);
@@ -80,14 +79,9 @@ Status render_in_flight(gpu::SceneRenderer& renderer, const RecordPlan& plan, Re
     progress.frame_rendered(frame, finished->statistics.proxies, finished->statistics.cpu_prepare_ms);
     return {};
   };
-  auto slot_busy = [&](int frame) {
-    for (int other : in_flight)
-      if (std::size_t(other) % slots == std::size_t(frame) % slots) return true;
-    return false;
-  };
   for (int frame : plan.frames) {
     if (g_interrupted) break;
-    while (!in_flight.empty() && (in_flight.size() >= slots || slot_busy(frame)))
+    while (in_flight.size() >= slots)
       if (Status s = finish_oldest(); !s) return s;
     if (Status s = renderer.begin_frame(frame); !s) return s;
     in_flight.push_back(frame);
@@ -100,8 +94,6 @@ Status render_in_flight(gpu::SceneRenderer& renderer, const RecordPlan& plan, Re
 // --aov: one frame at a time, since the intermediate buffers hold only the latest frame.
 Status render_with_aovs(gpu::SceneRenderer& renderer, const RecordPlan& plan, RecordProgress& progress) {
   const scene::Scene& scene = renderer.scene();
-  auto proxies = SceneProxies::create(scene, assets_dir());
-  if (!proxies) return make_error("proxies overlay: " + proxies.message());
   for (int frame : plan.frames) {
     if (g_interrupted) break;
     auto finished = renderer.render(frame);
@@ -110,11 +102,9 @@ Status render_with_aovs(gpu::SceneRenderer& renderer, const RecordPlan& plan, Re
                                      scene.output.height, plan.exr);
         !s)
       return s;
-    auto spheres = (*proxies)->spheres(frame);
-    if (!spheres) return spheres.error();
     const auto camera = scene::evaluate_scene_camera(scene, scene::frame_time_s(scene.output, frame));
     const image::ImageF final_frame = ldr_to_linear(finished->ldr, scene.output.width, scene.output.height);
-    if (Status s = write_aovs(plan.dir, frame, renderer.frame(), final_frame, *spheres, camera); !s) return s;
+    if (Status s = write_aovs(plan.dir, frame, renderer.frame(), final_frame, finished->spheres, camera); !s) return s;
     progress.frame_rendered(frame, finished->statistics.proxies, finished->statistics.cpu_prepare_ms);
   }
   return {};

@@ -266,6 +266,7 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Context& context, c
     renderer->in_flight_.push_back(std::move(*in_flight));
   }
   renderer->slot_frame_.assign(slots, -1);
+  renderer->slot_spheres_.assign(slots, {});
   renderer->slot_statistics_.assign(slots, {});
   return renderer;
 }
@@ -327,7 +328,7 @@ void SceneRenderer::record_skinning(VkCommandBuffer commands, std::uint32_t slot
 }
 
 Status SceneRenderer::begin_frame(int frame) {
-  const std::uint32_t slot = std::uint32_t(frame) % std::uint32_t(in_flight_.size());
+  const std::uint32_t slot = next_slot_;
   if (slot_frame_[slot] >= 0)
     return make_error("frame " + std::to_string(slot_frame_[slot]) + " still holds ring slot " + std::to_string(slot) +
                       ": finish it before beginning frame " + std::to_string(frame));
@@ -339,6 +340,8 @@ Status SceneRenderer::begin_frame(int frame) {
   });
   if (!submitted) return submitted;
   slot_frame_[slot] = frame;
+  slot_spheres_[slot] = spheres_;
+  next_slot_ = (next_slot_ + 1) % std::uint32_t(in_flight_.size());
   return {};
 }
 
@@ -369,8 +372,9 @@ Result<PassTimings> SceneRenderer::time_passes(int frame) {
 }
 
 Result<FinishedFrame> SceneRenderer::finish_frame(int frame) {
-  const std::uint32_t slot = std::uint32_t(frame) % std::uint32_t(in_flight_.size());
-  if (slot_frame_[slot] != frame) return make_error("frame " + std::to_string(frame) + " was not begun");
+  std::uint32_t slot = 0;
+  while (slot < slot_frame_.size() && slot_frame_[slot] != frame) ++slot;
+  if (slot == slot_frame_.size()) return make_error("frame " + std::to_string(frame) + " was not begun");
   if (Status waited = in_flight_[slot].wait(); !waited) return waited.error();
   FinishedFrame finished;
   finished.frame = frame;
@@ -378,6 +382,7 @@ Result<FinishedFrame> SceneRenderer::finish_frame(int frame) {
   finished.ldr.assign(ldr.begin(), ldr.end());
   finished.hdr = frame_->slot_hdr(slot);
   finished.statistics = slot_statistics_[slot];
+  finished.spheres = std::move(slot_spheres_[slot]);
   slot_frame_[slot] = -1;
   return finished;
 }

@@ -45,6 +45,7 @@ struct PassTimings {
 
 struct FinishedFrame {
   int frame = 0;
+  std::vector<render::Sphere> spheres;  // the proxies this frame streamed, world space
   std::vector<std::uint8_t> ldr;     // RGBA8 sRGB, width × height
   image::ImageF hdr;                 // linear radiance
   FrameStatistics statistics;
@@ -57,7 +58,8 @@ class SceneRenderer {
   ~SceneRenderer();
 
   // Prepares frame `frame` (scene time frame / fps) and submits it without waiting for the GPU.
-  // Its ring slot (frame mod frames_in_flight) must be free: finish the frame that held it first.
+  // Ring slots are used round-robin whatever the frame numbers (shards, resumed gaps); the next
+  // slot must be free: finish the oldest begun frame first when all are in flight.
   Status begin_frame(int frame);
   // Waits for frame `frame` (begun earlier) and returns its pixels.
   Result<FinishedFrame> finish_frame(int frame);
@@ -88,6 +90,8 @@ class SceneRenderer {
   std::unique_ptr<SkinPass> skin_pass_;
   std::vector<Context::InFlight> in_flight_;
   std::vector<int> slot_frame_;              // frame held by each slot, −1 when free
+  std::vector<std::vector<render::Sphere>> slot_spheres_;  // proxies of the frame in each slot
+  std::uint32_t next_slot_ = 0;
   std::vector<FrameStatistics> slot_statistics_;
   std::vector<render::Sphere> spheres_;      // scratch: this frame's proxies
 };
