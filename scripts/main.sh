@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# The README's first command: install dependencies, build (release), run the main job on the
-# built-in default. Until the recorder lands, the main job lists the Vulkan devices.
+# The README's first command: install dependencies, build (release), and record the built-in
+# default scene (the mannequin walking with soft shadows and bounce light) to out/: PNG frames
+# and out/video.mp4. Rerunning resumes: frames already in out/ are skipped.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 cmake --preset release
 cmake --build --preset release
-mkdir -p out
-build/release/apps/proxygi devices
+build/release/apps/proxygi record default -o out --mp4
