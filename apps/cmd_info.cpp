@@ -7,8 +7,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
+#include <optional>
+
 #include "anim/gltf_import.h"
 #include "apps/commands.h"
+#include "proxies/proxy_rig.h"
+#include "proxies/rig_file.h"
 
 namespace proxygi::app {
 namespace {
@@ -134,11 +139,25 @@ void add_info_command(CLI::App& app, CommandRunner& runner) {
     runner = [] {
       auto character = anim::import_gltf(model);
       if (!character) return fail_bad_input(character.message());
-      const nlohmann::json info = to_json(*character);
+      nlohmann::json info = to_json(*character);
+      // Proxy statistics when a rig is cached next to the model (proxies/rig_file.h).
+      const std::filesystem::path rig_path = proxies::default_rig_path(model);
+      std::optional<proxies::ProxyRig> rig;
+      if (std::filesystem::exists(rig_path)) {
+        auto read = proxies::read_rig(rig_path, *character);
+        if (!read) return fail_bad_input(read.message());
+        rig = std::move(*read);
+        const proxies::RigSummary summary = proxies::summarize_rig(*rig);
+        info["proxies"] = {{"rig", rig_path.string()},          {"spheres", summary.sphere_count},
+                           {"bones", summary.bone_count},         {"min_radius_m", summary.min_radius},
+                           {"max_radius_m", summary.max_radius},  {"total_volume_m3", summary.total_volume},
+                           {"binding", proxies::binding_name(rig->binding)}};
+      }
       if (json) {
         std::printf("%s\n", info.dump(2).c_str());
       } else {
         print_table(info);
+        if (rig) std::printf("\n%s\n", proxies::format_rig_summary(*rig).c_str());
       }
       return kExitOk;
     };

@@ -1,4 +1,4 @@
-// proxygi pose MODEL [--clip NAME|INDEX] [--time SECONDS] [--loop] [-o OUT.obj|OUT.ply]
+// proxygi pose MODEL [--clip NAME|INDEX] [--time SECONDS] [--loop] [--proxies] [-o OUT.obj|OUT.ply]
 // Poses every mesh of a model at one time of one clip (CPU skinning, world space) and writes
 // the result as OBJ or PLY (chosen by extension, written atomically), or prints a summary.
 #include <algorithm>
@@ -13,6 +13,10 @@
 #include "anim/gltf_import.h"
 #include "anim/posed_character.h"
 #include "apps/commands.h"
+#include "proxies/rig_cache.h"
+#include "proxies/rig_file.h"
+#include "proxies/sphere_mesh.h"
+#include "proxies/tracking.h"
 #include "base/atomic_file.h"
 
 namespace proxygi::app {
@@ -25,6 +29,7 @@ struct PoseOptions {
   bool time_given = false;
   bool loop = false;
   std::string output;
+  bool proxies = false;
 };
 
 std::string material_name(const anim::Character& character, int material) {
@@ -135,6 +140,30 @@ int run_pose(const PoseOptions& options) {
   }
   Result<std::vector<anim::PosedPrimitive>> meshes = anim::pose_meshes(*character, pose);
   if (!meshes) return fail_bad_input("pose: " + meshes.message());
+  if (options.proxies) {
+    // The spheres as one extra mesh "proxies": the cached rig (fitted and cached when missing).
+    auto hash = proxies::hash_file(options.model);
+    if (!hash) return fail_bad_input("pose: " + hash.message());
+    proxies::RigRequest request;
+    request.rig_file = proxies::default_rig_path(options.model);
+    request.model_name = std::filesystem::path(options.model).filename().string();
+    request.model_hash = *hash;
+    auto rig = proxies::load_or_fit_rig(*character, request);
+    if (!rig) return fail_bad_input("pose: " + rig.message());
+    auto tracking = proxies::compile_tracking(rig->rig, *character, rig->rig.binding);
+    if (!tracking) return fail_bad_input("pose: " + tracking.message());
+    std::vector<proxies::WorldSphere> spheres(tracking->spheres.size());
+    if (Status tracked = proxies::TrackProxiesJob{&*tracking, pose.world, spheres}.run(); !tracked)
+      return fail_runtime("pose: " + tracked.message());
+    proxies::SphereGeometry geometry;
+    proxies::append_sphere_geometry(spheres, 16, geometry);
+    anim::PosedPrimitive sphere_mesh;
+    sphere_mesh.name = "proxies";
+    sphere_mesh.positions = std::move(geometry.positions);
+    sphere_mesh.normals = std::move(geometry.normals);
+    sphere_mesh.indices = std::move(geometry.indices);
+    meshes->push_back(std::move(sphere_mesh));
+  }
 
   std::size_t vertices = 0, triangles = 0;
   glm::vec3 low(std::numeric_limits<float>::max()), high(std::numeric_limits<float>::lowest());
@@ -172,6 +201,8 @@ void add_pose_command(CLI::App& app, CommandRunner& runner) {
   command->add_option("--time", options->time, "Clip time in seconds (before 0 / after the end: clamped)")
       ->each([options](const std::string&) { options->time_given = true; });
   command->add_flag("--loop", options->loop, "Wrap --time into the clip instead of clamping");
+  command->add_flag("--proxies", options->proxies,
+                    "Also write the proxy spheres (the rig cached next to the model, fitted when missing)");
   command->add_option("-o,--output", options->output, "Output mesh: .obj or .ply (default: print a summary only)");
   command->callback([&runner, options] { runner = [options] { return run_pose(*options); }; });
 }
