@@ -1,7 +1,7 @@
 #version 460
 // Receivers pass (frame step 3): one receiver per k×k block of display pixels, the block's
 // center texel, or the first covered texel of the block when the center is background.
-// CPU twin: select_receiver in src/render (tests/gpu compare).
+// CPU twin: render::select_receiver (src/render/shading.h).
 #extension GL_GOOGLE_include_directive : require
 #include "frame_common.glsl"
 

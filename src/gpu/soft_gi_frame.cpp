@@ -426,6 +426,21 @@ Result<image::ImageF> SoftGiFrame::read_receiver_normals() const {
   return out;
 }
 
+Result<image::ImageF> SoftGiFrame::read_shaded() const {
+  return read_vec4_buffer(shaded_, settings_.receiver_width(), settings_.receiver_height());
+}
+
+Result<image::ImageF> SoftGiFrame::read_gbuffer_image(const Image& image) const {
+  auto bytes = readback(context_, image, VK_IMAGE_LAYOUT_GENERAL);  // record() leaves them GENERAL
+  if (!bytes) return bytes.error();
+  image::ImageF out{int(settings_.width), int(settings_.height)};
+  std::memcpy(out.pixels.data(), bytes->data(), std::min(bytes->size(), out.pixels.size() * sizeof(glm::vec4)));
+  return out;
+}
+Result<image::ImageF> SoftGiFrame::read_gbuffer_positions() const { return read_gbuffer_image(position_depth_); }
+Result<image::ImageF> SoftGiFrame::read_gbuffer_normals() const { return read_gbuffer_image(normal_); }
+Result<image::ImageF> SoftGiFrame::read_gbuffer_albedo() const { return read_gbuffer_image(albedo_); }
+
 Result<std::vector<float>> SoftGiFrame::read_log_occlusion() const {
   auto bytes = readback(context_, log_occlusion_);
   if (!bytes) return bytes.error();

@@ -95,10 +95,16 @@ class SoftGiFrame {
   Result<image::ImageF> read_receiver_positions() const; // receiver res: xyz p, a eye depth
   Result<image::ImageF> read_receiver_normals() const;
   Result<std::vector<float>> read_log_occlusion() const; // receiver res × n²
+  Result<image::ImageF> read_shaded() const;             // receiver res: rgb E_dir + E_ind, a depth
+  // G-buffer (display res): xyz world position, a eye depth (0 = background); xyz normal.
+  Result<image::ImageF> read_gbuffer_positions() const;
+  Result<image::ImageF> read_gbuffer_normals() const;
+  Result<image::ImageF> read_gbuffer_albedo() const;
 
  private:
   SoftGiFrame(Context& context) : context_(context) {}
   Result<image::ImageF> read_vec4_buffer(const Buffer& buffer, std::uint32_t width, std::uint32_t height) const;
+  Result<image::ImageF> read_gbuffer_image(const Image& image) const;
 
   struct Slot {
     Buffer constants;     // FrameConstants, host-visible uniform

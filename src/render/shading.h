@@ -4,6 +4,7 @@
 //   accumulate_log_occlusion  ↔ shadow_gather.comp   f = Σ_i rot(O_log(s_i), d_i)
 //   exponentiate_and_shade    ↔ exponentiate.comp    O_p = HYB(f), E_direct = O_p · LH(N)
 //   accumulate_indirect       ↔ indirect.comp        E_ind = ξ_p Σ_i (a_i/π) κ_i (V_i · H(N))
+//   select_receiver           ↔ receivers.comp       which display texel a receiver stands for
 //   upsample                  ↔ upsample.comp        eq. 11 with the all-weights-vanish fallback
 //   tonemap                   ↔ composite.comp
 // Irradiance E = ∫ L max(N·s, 0) ds (not divided by π); the receiver's radiance is albedo/π · E.
@@ -45,6 +46,23 @@ struct IndirectResult {
 };
 IndirectResult accumulate_indirect(const FrameTables& tables, const glm::vec3& p, const glm::vec3& normal,
                                    std::span<const Sphere> spheres, float occlusion_dc);
+
+// The display texel that receiver (rx, ry) stands for (receivers.comp): the center of its k×k
+// block, or, when that is background (eye depth ≤ 0), the first covered texel of the block in
+// row-major order; {-1, -1} when the whole block is background. `depth(x, y)` reads the
+// G-buffer's eye depth.
+template <class DepthAt>
+glm::ivec2 select_receiver(int rx, int ry, int k, int width, int height, DepthAt depth) {
+  const glm::ivec2 origin(rx * k, ry * k);
+  const glm::ivec2 center = glm::min(origin + glm::ivec2(k / 2), glm::ivec2(width - 1, height - 1));
+  if (depth(center.x, center.y) > 0.0f) return center;
+  for (int y = 0; y < k; ++y)
+    for (int x = 0; x < k; ++x) {
+      const glm::ivec2 texel = origin + glm::ivec2(x, y);
+      if (texel.x < width && texel.y < height && depth(texel.x, texel.y) > 0.0f) return texel;
+    }
+  return {-1, -1};
+}
 
 // Bilateral upsampling weights of paper eq. 11 for one display pixel from its 2×2 receivers.
 struct UpsampleTap {

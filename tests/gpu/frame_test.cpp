@@ -20,7 +20,8 @@ struct RenderedFrame {
 };
 
 RenderedFrame render_sphere_over_plane(Context& context, int order, std::uint32_t size, std::uint32_t scale,
-                                       const std::vector<render::Sphere>& spheres) {
+                                       const std::vector<render::Sphere>& spheres,
+                                       const glm::vec3& eye = {0.0f, 4.0f, 3.0f}) {
   RenderedFrame out;
   render::FrameTableSettings table_settings;
   table_settings.order = order;
@@ -37,7 +38,7 @@ RenderedFrame render_sphere_over_plane(Context& context, int order, std::uint32_
   const auto ground = testing::ground_plane(20.0f, 4);
   auto mesh = upload_static_mesh(context, ground.positions, ground.normals, ground.indices, glm::vec4(0.8f, 0.8f, 0.8f, 1));
   EXPECT_TRUE(mesh.ok());
-  const FrameView view = testing::look_at({0.0f, 4.0f, 3.0f}, {0.0f, 0.0f, 0.0f}, 60.0f, 1.0f);
+  const FrameView view = testing::look_at(eye, {0.0f, 0.0f, 0.0f}, 60.0f, 1.0f);
   EXPECT_TRUE(out.frame->write_slot(0, view, spheres).ok());
   const DrawItem draws[] = {mesh->draw()};
   EXPECT_TRUE(context.submit_and_wait([&](VkCommandBuffer commands) { out.frame->record(commands, 0, draws); }).ok());
@@ -138,6 +139,92 @@ TEST_F(FrameTest, OutputsAreFiniteAndNonNegative) {
       ASSERT_TRUE(std::isfinite(pixel[c]));
       ASSERT_GE(pixel[c], 0.0f);
     }
+}
+
+}  // namespace
+}  // namespace proxygi::gpu
+
+namespace proxygi::gpu {
+namespace {
+
+using FrameDisplayTest = testing::GpuTest;
+
+TEST_F(FrameDisplayTest, ReceiversUpsampleAndCompositeMatchCpuTwins) {
+  constexpr int kSize = 64, kScale = 2;
+  const std::vector<render::Sphere> spheres = {{{0.0f, 0.8f, 0.0f}, 0.5f, {0.9f, 0.1f, 0.1f}}};
+  // A low camera: the plane's far edge and the sky above the horizon are in view.
+  auto rendered = render_sphere_over_plane(context(), 4, kSize, kScale, spheres, {0.0f, 1.0f, 4.0f});
+  ASSERT_TRUE(rendered.frame);
+  const SoftGiFrame& frame = *rendered.frame;
+  auto gbuffer_positions = frame.read_gbuffer_positions();
+  auto gbuffer_normals = frame.read_gbuffer_normals();
+  auto gbuffer_albedo = frame.read_gbuffer_albedo();
+  auto receiver_positions = frame.read_receiver_positions();
+  auto receiver_normals = frame.read_receiver_normals();
+  auto shaded = frame.read_shaded();
+  auto irradiance = frame.read_irradiance();
+  auto hdr = frame.read_hdr();
+  auto ldr = frame.read_ldr();
+  ASSERT_TRUE(gbuffer_positions.ok() && gbuffer_normals.ok() && gbuffer_albedo.ok() && receiver_positions.ok() &&
+              receiver_normals.ok() && shaded.ok() && irradiance.ok() && hdr.ok() && ldr.ok());
+  auto depth_at = [&](int x, int y) { return gbuffer_positions->at(x, y).w; };
+
+  // Receivers: each holds exactly the G-buffer texel the twin selects.
+  const int receivers = kSize / kScale;
+  int covered = 0;
+  for (int ry = 0; ry < receivers; ++ry)
+    for (int rx = 0; rx < receivers; ++rx) {
+      const glm::ivec2 texel = render::select_receiver(rx, ry, kScale, kSize, kSize, depth_at);
+      const glm::vec4 receiver = receiver_positions->at(rx, ry);
+      if (texel.x < 0) {
+        EXPECT_EQ(receiver.w, 0.0f) << rx << "," << ry;
+        continue;
+      }
+      ++covered;
+      EXPECT_EQ(receiver, gbuffer_positions->at(texel.x, texel.y)) << rx << "," << ry;
+      EXPECT_EQ(glm::vec3(receiver_normals->at(rx, ry)), glm::vec3(gbuffer_normals->at(texel.x, texel.y)));
+    }
+  EXPECT_GT(covered, receivers * receivers / 2);
+
+  // Upsampling and composite at every other display pixel.
+  int checked = 0, background = 0;
+  for (int y = 0; y < kSize; y += 2)
+    for (int x = 0; x < kSize; x += 2) {
+      const glm::vec4 p = gbuffer_positions->at(x, y);
+      const std::size_t index = std::size_t(y * kSize + x);
+      if (p.w <= 0.0f) {
+        EXPECT_EQ(glm::vec3(hdr->at(x, y)), glm::vec3(1.0f)) << "background sees the white sky";
+        ++background;
+        continue;
+      }
+      const glm::vec2 coordinate = (glm::vec2(x, y) + 0.5f) / float(kScale) - 0.5f;
+      const glm::ivec2 base = glm::ivec2(glm::floor(coordinate));
+      const glm::vec2 fraction = coordinate - glm::vec2(base);
+      std::array<render::UpsampleTap, 4> taps;
+      for (int tap = 0; tap < 4; ++tap) {
+        const glm::ivec2 offset(tap & 1, tap >> 1);
+        const glm::ivec2 source = glm::clamp(base + offset, glm::ivec2(0), glm::ivec2(receivers - 1));
+        taps[std::size_t(tap)].value = glm::vec3(shaded->at(source.x, source.y));
+        taps[std::size_t(tap)].depth = shaded->at(source.x, source.y).w;
+        taps[std::size_t(tap)].normal = glm::vec3(receiver_normals->at(source.x, source.y));
+        taps[std::size_t(tap)].bilinear_weight = (offset.x == 1 ? fraction.x : 1.0f - fraction.x) *
+                                                 (offset.y == 1 ? fraction.y : 1.0f - fraction.y);
+      }
+      const glm::vec3 expected = render::upsample(taps, p.w, glm::vec3(gbuffer_normals->at(x, y)),
+                                                  render::UpsampleMode::bilateral, FrameSettings{}.bilateral_depth_epsilon);
+      EXPECT_LE(relative_error(glm::vec3(irradiance->at(x, y)), expected), 1e-3f) << "upsample at " << x << "," << y;
+
+      const glm::vec3 radiance = glm::vec3(gbuffer_albedo->at(x, y)) / kPi * glm::vec3(irradiance->at(x, y));
+      EXPECT_LE(relative_error(glm::vec3(hdr->at(x, y)), radiance), 1e-3f) << "composite at " << x << "," << y;
+      const glm::vec3 display = render::tonemap(glm::vec3(hdr->at(x, y)), 1.0f, render::Tonemap::aces);
+      for (int c = 0; c < 3; ++c) {
+        const int expected_code = int(image::linear_to_srgb(display[c]) * 255.0f + 0.5f);
+        EXPECT_NEAR(int((*ldr)[index * 4 + std::size_t(c)]), expected_code, 1) << "sRGB at " << x << "," << y;
+      }
+      ++checked;
+    }
+  EXPECT_GE(checked, 200);
+  EXPECT_GE(background, 10);
 }
 
 }  // namespace
