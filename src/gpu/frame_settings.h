@@ -11,6 +11,7 @@ struct FrameSettings {
   std::uint32_t height = 512;
   std::uint32_t receiver_scale = 4;   // k: receivers at 1/k resolution (1, 2, 4, 8)
   float hybrid_tau = 0.25f;           // HYB threshold τ
+  bool optimal_linear_only = false;   // OL instead of HYB: no squarings (HYB with τ = ∞)
   render::UpsampleMode upsample = render::UpsampleMode::bilateral;
   float bilateral_depth_epsilon = 0.05f;  // ε of eq. 11, meters of eye depth
   bool indirect = true;

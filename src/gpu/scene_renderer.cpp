@@ -112,6 +112,7 @@ FrameSettings frame_settings(const scene::Scene& scene) {
   settings.height = std::uint32_t(scene.output.height);
   settings.receiver_scale = std::uint32_t(scene.render.receiver_scale);
   settings.hybrid_tau = scene.render.hyb_tau;
+  settings.optimal_linear_only = scene.render.exponential == scene::Exponential::ol;
   settings.upsample = scene.render.upsampling == scene::Upsampling::bilinear ? render::UpsampleMode::bilinear
                                                                               : render::UpsampleMode::bilateral;
   settings.indirect = scene.render.indirect;
@@ -125,7 +126,6 @@ FrameSettings frame_settings(const scene::Scene& scene) {
 void warn_unsupported(const scene::RenderSettings& render) {
   if (render.indirect_operator != scene::IndirectOperator::averaged)
     log_warning("render.indirect_operator: only 'averaged' runs on the GPU; using it");
-  if (render.exponential != scene::Exponential::hyb) log_warning("render.exponential: only 'hyb' runs on the GPU; using it");
   if (render.splat != scene::SplatMethod::compute)
     log_warning("render.splat: only the 'compute' gather runs on the GPU; using it");
 }

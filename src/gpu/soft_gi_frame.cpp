@@ -1,6 +1,7 @@
 #include "gpu/soft_gi_frame.h"
 
 #include <cstring>
+#include <limits>
 
 #include "gpu/context.h"
 #include "gpu/transfer.h"
@@ -171,7 +172,8 @@ Status SoftGiFrame::write_slot(std::uint32_t slot, const FrameView& view, std::s
       glm::uvec4(settings_.width, settings_.height, settings_.receiver_width(), settings_.receiver_height());
   constants.counts = glm::uvec4(std::uint32_t(spheres.size()), settings_.receiver_scale, std::uint32_t(order_),
                                 std::uint32_t(settings_.upsample));
-  constants.shadow = glm::vec4(eta_shadow_, eta_indirect_, settings_.hybrid_tau, log_table_rows_);
+  const float tau = settings_.optimal_linear_only ? std::numeric_limits<float>::max() : settings_.hybrid_tau;
+  constants.shadow = glm::vec4(eta_shadow_, eta_indirect_, tau, log_table_rows_);
   constants.tables = glm::vec4(optimal_linear_max_, optimal_linear_rows_, visibility_rows_, cube_size_);
   constants.output_params = glm::vec4(settings_.exposure, float(int(settings_.tonemap)),
                                       settings_.bilateral_depth_epsilon, settings_.indirect ? 1.0f : 0.0f);

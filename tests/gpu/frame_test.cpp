@@ -21,7 +21,7 @@ struct RenderedFrame {
 
 RenderedFrame render_sphere_over_plane(Context& context, int order, std::uint32_t size, std::uint32_t scale,
                                        const std::vector<render::Sphere>& spheres,
-                                       const glm::vec3& eye = {0.0f, 4.0f, 3.0f}) {
+                                       const glm::vec3& eye = {0.0f, 4.0f, 3.0f}, bool optimal_linear_only = false) {
   RenderedFrame out;
   render::FrameTableSettings table_settings;
   table_settings.order = order;
@@ -30,6 +30,7 @@ RenderedFrame render_sphere_over_plane(Context& context, int order, std::uint32_
   settings.width = settings.height = size;
   settings.receiver_scale = scale;
   settings.frames_in_flight = 1;
+  settings.optimal_linear_only = optimal_linear_only;
   image::ImageF sky(8, 4, glm::vec4(1.0f));
   auto frame = SoftGiFrame::create(context, settings, out.tables, sky);
   EXPECT_TRUE(frame.ok()) << (frame.ok() ? "" : frame.message());
@@ -90,6 +91,37 @@ TEST_F(FrameTest, PassesMatchCpuTwinsAtSampleReceivers) {
   EXPECT_GE(checked, 100);
   EXPECT_GE(shadowed, 10) << "the samples must include shadowed receivers";
   EXPECT_GE(lit_by_bounce, 10) << "the samples must include receivers lit by the proxies";
+}
+
+TEST_F(FrameTest, OptimalLinearOptionMatchesCpuOptimalLinear) {
+  // render.exponential = ol: one OL step, no squarings; twin: sh::exp_optimal_linear.
+  const std::vector<render::Sphere> spheres = {{{0.0f, 0.8f, 0.0f}, 0.5f, {0.9f, 0.1f, 0.1f}},
+                                               {{0.4f, 0.4f, 0.3f}, 0.35f, {0.1f, 0.2f, 0.9f}}};
+  auto rendered = render_sphere_over_plane(context(), 4, 48, 2, spheres, {0.0f, 4.0f, 3.0f}, true);
+  ASSERT_TRUE(rendered.frame);
+  auto positions = rendered.frame->read_receiver_positions();
+  auto normals = rendered.frame->read_receiver_normals();
+  auto direct = rendered.frame->read_direct();
+  ASSERT_TRUE(positions.ok() && normals.ok() && direct.ok());
+  int shadowed = 0;
+  for (int y = 0; y < positions->height; y += 2)
+    for (int x = 0; x < positions->width; x += 2) {
+      const glm::vec4 p = positions->at(x, y);
+      if (p.w <= 0.0f) continue;
+      const glm::vec3 n = glm::vec3(normals->at(x, y));
+      const auto f = render::accumulate_log_occlusion(rendered.tables, glm::vec3(p), n, spheres);
+      std::vector<float> visibility(f.size()), lh(f.size());
+      sh::exp_optimal_linear(4, f, rendered.tables.optimal_linear, visibility);
+      glm::vec3 expected(0.0f);
+      for (int c = 0; c < 3; ++c) {
+        render::lookup_lighting_cube(rendered.tables.lighting_cube[std::size_t(c)], n, lh);
+        for (std::size_t i = 0; i < f.size(); ++i) expected[c] += visibility[i] * lh[i];
+      }
+      expected = glm::max(expected, glm::vec3(0.0f));
+      EXPECT_LE(relative_error(glm::vec3(direct->at(x, y)), expected), 1e-3f) << "OL direct at " << x << "," << y;
+      if (f[1] * f[1] + f[2] * f[2] + f[3] * f[3] > 1e-3f) ++shadowed;
+    }
+  EXPECT_GE(shadowed, 5);
 }
 
 TEST_F(FrameTest, SphereOverPlaneMatchesClosedFormUnderWhiteSky) {
