@@ -29,8 +29,7 @@ const char* frame_pass_name(FramePass pass) {
     case FramePass::shadow: return "shadow";
     case FramePass::exponentiate: return "exponentiate";
     case FramePass::indirect: return "indirect";
-    case FramePass::upsample: return "upsample";
-    case FramePass::composite: return "composite";
+    case FramePass::upsample_composite: return "upsample+composite";
     case FramePass::count: break;
   }
   return "unknown";
@@ -65,8 +64,8 @@ Result<FramePipelines> FramePipelines::create(const Context& context, int order)
       {&out.shadow, "shadow_gather.comp" + suffix, {kUniform, kStorage, kUniform, kStorage, kStorage}, 0},
       {&out.exponentiate, "exponentiate.comp" + suffix, {kUniform, kStorage, kStorage, kStorage, kStorage, kStorage}, 0},
       {&out.indirect, "indirect.comp", {kUniform, kStorage, kUniform, kStorage, kStorage, kStorage, kStorage}, 0},
-      {&out.upsample, "upsample.comp", {kUniform, kImage, kImage, kStorage, kStorage, kStorage}, 0},
-      {&out.composite, "composite.comp", {kUniform, kImage, kImage, kStorage, kStorage, kStorage, kStorage},
+      {&out.upsample_composite, "upsample_composite.comp",
+       {kUniform, kImage, kImage, kStorage, kStorage, kStorage, kImage, kStorage, kStorage, kStorage},
        sizeof(gpu_layout::CompositePush)},
   };
   for (const auto& spec : specs) {

@@ -7,8 +7,8 @@
 //   exponentiate receivers, log SH, OL table, LH cubes   → direct E and (O_p)_0 per receiver
 //   indirect     receivers, proxies, visibility table, direct → indirect E and ω_p per receiver,
 //                and the packed shaded buffer (E_direct + E_indirect, eye depth)
-//   upsample     G-buffer guides, receiver normals, shaded → irradiance at display resolution
-//   composite    G-buffer, irradiance, environment       → HDR radiance and tonemapped sRGB
+//   upsample_composite  G-buffer, receiver normals, shaded, environment → display-resolution
+//                irradiance (AOV), HDR radiance and tonemapped sRGB (steps 7 and 8 fused)
 #include <array>
 
 #include "gpu/pipeline.h"
@@ -17,7 +17,7 @@ namespace proxygi::gpu {
 
 class Context;
 
-enum class FramePass { skin, gbuffer, receivers, shadow, exponentiate, indirect, upsample, composite, count };
+enum class FramePass { skin, gbuffer, receivers, shadow, exponentiate, indirect, upsample_composite, count };
 const char* frame_pass_name(FramePass pass);
 
 struct FramePipelines {
@@ -26,8 +26,7 @@ struct FramePipelines {
   Pipeline shadow;
   Pipeline exponentiate;
   Pipeline indirect;
-  Pipeline upsample;
-  Pipeline composite;
+  Pipeline upsample_composite;
 
   // Builds every pipeline for SH order 3..6 (the order-dependent shaders are embedded per order).
   static Result<FramePipelines> create(const Context& context, int order);

@@ -363,7 +363,7 @@ Result<PassTimings> SceneRenderer::time_passes(int frame) {
   if (!skin) return skin.error();
   timings.milliseconds[std::size_t(FramePass::skin)] = *skin;
   for (FramePass pass : {FramePass::gbuffer, FramePass::receivers, FramePass::shadow, FramePass::exponentiate,
-                         FramePass::indirect, FramePass::upsample, FramePass::composite}) {
+                         FramePass::indirect, FramePass::upsample_composite}) {
     auto ms = timed([&](VkCommandBuffer commands) { frame_->record_pass(commands, 0, pass, *draws); });
     if (!ms) return ms.error();
     timings.milliseconds[std::size_t(pass)] = *ms;

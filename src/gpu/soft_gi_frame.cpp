@@ -315,9 +315,9 @@ void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot, Fram
       context_.end_label(commands);
       break;
     }
-    case FramePass::upsample: {
-      context_.begin_label(commands, frame_pass_name(FramePass::upsample));
-      pipelines_.upsample.bind(commands);
+    case FramePass::upsample_composite: {
+      context_.begin_label(commands, frame_pass_name(FramePass::upsample_composite));
+      pipelines_.upsample_composite.bind(commands);
       DescriptorPush()
           .uniform_buffer(0, current.constants)
           .storage_image(1, position_depth_.view())
@@ -325,26 +325,13 @@ void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot, Fram
           .storage_buffer(3, receivers_)
           .storage_buffer(4, shaded_)
           .storage_buffer(5, irradiance_)
-          .push(context_, commands, pipelines_.upsample);
-      dispatch_2d(width, height);
-      memory_barrier(commands);
-      context_.end_label(commands);
-      break;
-    }
-    case FramePass::composite: {
-      context_.begin_label(commands, frame_pass_name(FramePass::composite));
-      pipelines_.composite.bind(commands);
-      DescriptorPush()
-          .uniform_buffer(0, current.constants)
-          .storage_image(1, position_depth_.view())
-          .storage_image(2, albedo_.view())
-          .storage_buffer(3, irradiance_)
-          .storage_buffer(4, environment_)
-          .storage_buffer(5, hdr_)
-          .storage_buffer(6, ldr_)
-          .push(context_, commands, pipelines_.composite);
+          .storage_image(6, albedo_.view())
+          .storage_buffer(7, environment_)
+          .storage_buffer(8, hdr_)
+          .storage_buffer(9, ldr_)
+          .push(context_, commands, pipelines_.upsample_composite);
       const gpu_layout::CompositePush composite{environment_width_, environment_height_, 0, 0};
-      pipelines_.composite.push_constants(commands, &composite, sizeof(composite));
+      pipelines_.upsample_composite.push_constants(commands, &composite, sizeof(composite));
       dispatch_2d(width, height);
       memory_barrier(commands);
       context_.end_label(commands);
@@ -359,7 +346,7 @@ void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot, Fram
 void SoftGiFrame::record(VkCommandBuffer commands, std::uint32_t slot, std::span<const DrawItem> draws) const {
   memory_barrier(commands);  // the previous frame on the queue may still read these targets
   for (FramePass pass : {FramePass::gbuffer, FramePass::receivers, FramePass::shadow, FramePass::exponentiate,
-                         FramePass::indirect, FramePass::upsample, FramePass::composite})
+                         FramePass::indirect, FramePass::upsample_composite})
     record_pass(commands, slot, pass, draws);
   const Slot& current = slots_[slot];
   const VkBufferCopy ldr_copy{0, 0, ldr_.size()}, hdr_copy{0, 0, hdr_.size()};

@@ -1,5 +1,6 @@
 #pragma once
-// SoftGiFrame: the GPU half of one proxygi frame (DESIGN.md "One frame, as data", steps 2–8;
+// SoftGiFrame: the GPU half of one proxygi frame (DESIGN.md "One frame, as data", steps 2–8,
+// with 7 and 8 fused into one pass;
 // step 1, skinning, is gpu::SkinPass, run by the caller before record()). It owns the frame's
 // targets, the uploaded tables (render::FrameTables) and a ring of per-frame upload slots, so
 // the CPU can write frame t+1's constants and proxies while the GPU still renders frame t.
@@ -73,7 +74,7 @@ class SoftGiFrame {
   // Records steps 2–8 for the frame written in `slot`, drawing `draws` into the G-buffer, and
   // copies the results into the slot's readback buffers.
   void record(VkCommandBuffer commands, std::uint32_t slot, std::span<const DrawItem> draws) const;
-  // Records one pass (gbuffer .. composite) followed by a memory barrier; the passes in order
+  // Records one pass (gbuffer .. upsample_composite) followed by a memory barrier; the passes in order
   // equal record() without the readback copies. The benchmark submits them one by one to time
   // each with the CPU clock (lavapipe's timestamps are unreliable, rendering-notes §4.2).
   void record_pass(VkCommandBuffer commands, std::uint32_t slot, FramePass pass, std::span<const DrawItem> draws) const;
