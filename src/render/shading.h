@@ -5,8 +5,8 @@
 //   exponentiate_and_shade    ↔ exponentiate.comp    O_p = HYB(f), E_direct = O_p · LH(N)
 //   accumulate_indirect       ↔ indirect.comp        E_ind = ξ_p Σ_i (a_i/π) κ_i (V_i · H(N))
 //   select_receiver           ↔ receivers.comp       which display texel a receiver stands for
-//   upsample                  ↔ upsample.comp        eq. 11 with the all-weights-vanish fallback
-//   tonemap                   ↔ composite.comp
+//   upsample                  ↔ upsample_composite.comp  eq. 11 with the all-weights-vanish fallback
+//   tonemap                   ↔ upsample_composite.comp  (with the sRGB encoding)
 // Irradiance E = ∫ L max(N·s, 0) ds (not divided by π); the receiver's radiance is albedo/π · E.
 #include <span>
 #include <vector>
