@@ -41,7 +41,7 @@ Scene default_scene() {
   scene.environment = daylight();
   // A large ground reaches almost to the horizon, so no band of distant "below horizon" sky
   // shows between its edge and the horizon.
-  scene.ground = Ground{true, 200.0f, glm::vec3(0.8f, 0.8f, 0.8f)};
+  scene.ground = Ground{true, 2000.0f, glm::vec3(0.8f, 0.8f, 0.8f)};
 
   FixedCamera camera;
   camera.position = glm::vec3(0.0f, 1.9f, 7.2f);
@@ -49,7 +49,7 @@ Scene default_scene() {
   camera.fov_degrees = 50.0f;
   scene.camera.kind = camera;
   scene.camera.near_m = 0.1f;
-  scene.camera.far_m = 100.0f;
+  scene.camera.far_m = 1500.0f;  // beyond the ground edge, so it meets the horizon
 
   scene.output.width = 512;
   scene.output.height = 512;
@@ -91,7 +91,7 @@ Scene crowd_scene() {
   }
 
   scene.environment = daylight();
-  scene.ground = Ground{true, 200.0f, glm::vec3(0.8f, 0.8f, 0.8f)};
+  scene.ground = Ground{true, 2000.0f, glm::vec3(0.8f, 0.8f, 0.8f)};
 
   OrbitCamera camera;
   camera.target = glm::vec3(0.0f, 0.8f, 0.0f);
@@ -102,7 +102,7 @@ Scene crowd_scene() {
   camera.fov_degrees = 50.0f;
   scene.camera.kind = camera;
   scene.camera.near_m = 0.1f;
-  scene.camera.far_m = 100.0f;
+  scene.camera.far_m = 1500.0f;  // beyond the ground edge, so it meets the horizon
 
   scene.output.width = 512;
   scene.output.height = 512;
