@@ -21,6 +21,23 @@ double edge(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& p) {
   return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
 }
 
+// Where the line through q (in the u, v plane) along `axis` crosses triangle abc: false when it
+// misses; else `crossing` is the axis coordinate and `sign` ±1 the winding contribution (the sign
+// of the projected area, i.e. of normal[axis]).
+bool line_crosses_triangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, int axis, const glm::dvec2& q,
+                           double& crossing, int& sign) {
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  const glm::dvec2 a2(a[u], a[v]), b2(b[u], b[v]), c2(c[u], c[v]);
+  const double w0 = edge(b2, c2, q), w1 = edge(c2, a2, q), w2 = edge(a2, b2, q);
+  const double area = w0 + w1 + w2;  // = twice the projected signed area, sign of normal[axis]
+  if (area == 0.0) return false;
+  const bool hit = area > 0.0 ? (w0 >= 0.0 && w1 >= 0.0 && w2 >= 0.0) : (w0 <= 0.0 && w1 <= 0.0 && w2 <= 0.0);
+  if (!hit) return false;
+  crossing = (w0 * double(a[axis]) + w1 * double(b[axis]) + w2 * double(c[axis])) / area;
+  sign = area > 0.0 ? 1 : -1;
+  return true;
+}
+
 }  // namespace
 
 glm::vec3 closest_point_on_triangle(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b,
@@ -91,23 +108,19 @@ float ClosestTriangleGrid::distance(const glm::vec3& p, float max_distance) cons
   const int max_ring = int(std::ceil(max_distance / cell_)) + 1;
   for (int r = 0; r <= max_ring; ++r) {
     if (float(r - 1) * cell_ >= best) break;
-    const glm::ivec3 lo = glm::max(center - r, glm::ivec3(0));
-    const glm::ivec3 hi = glm::min(center + r, dims_ - 1);
-    for (int z = lo.z; z <= hi.z; ++z)
-      for (int y = lo.y; y <= hi.y; ++y)
-        for (int x = lo.x; x <= hi.x; ++x) {
-          if (std::max({std::abs(x - center.x), std::abs(y - center.y), std::abs(z - center.z)}) != r) continue;
-          const std::size_t i = (std::size_t(z) * std::size_t(dims_.y) + std::size_t(y)) * std::size_t(dims_.x) + std::size_t(x);
-          if (cell_start_[i] == cell_start_[i + 1]) continue;
-          const glm::vec3 cell_lo = origin_ + glm::vec3(x, y, z) * cell_;
-          if (box_distance(p, cell_lo, cell_lo + cell_) >= best) continue;
-          for (std::uint32_t k = cell_start_[i]; k < cell_start_[i + 1]; ++k) {
-            const glm::uvec3& t = soup_->triangles[cell_items_[k]];
-            const glm::vec3 q = closest_point_on_triangle(p, soup_->positions[t.x], soup_->positions[t.y],
-                                                          soup_->positions[t.z]);
-            best = std::min(best, glm::length(q - p));
-          }
-        }
+    for_each_cell_in_ring(center, r, dims_, [&](std::size_t i) {
+      if (cell_start_[i] == cell_start_[i + 1]) return;
+      const std::size_t x = i % std::size_t(dims_.x), y = (i / std::size_t(dims_.x)) % std::size_t(dims_.y),
+                        z = i / (std::size_t(dims_.x) * std::size_t(dims_.y));
+      const glm::vec3 cell_lo = origin_ + glm::vec3(float(x), float(y), float(z)) * cell_;
+      if (box_distance(p, cell_lo, cell_lo + cell_) >= best) return;
+      for (std::uint32_t k = cell_start_[i]; k < cell_start_[i + 1]; ++k) {
+        const glm::uvec3& t = soup_->triangles[cell_items_[k]];
+        const glm::vec3 q = closest_point_on_triangle(p, soup_->positions[t.x], soup_->positions[t.y],
+                                                      soup_->positions[t.z]);
+        best = std::min(best, glm::length(q - p));
+      }
+    });
   }
   return best;
 }
@@ -156,17 +169,12 @@ int WindingIndex::winding(const glm::vec3& p, int axis) const {
   int winding = 0;
   for (std::uint32_t k = plane.start[cell]; k < plane.start[cell + 1]; ++k) {
     const glm::uvec3& t = soup_->triangles[plane.items[k]];
-    const glm::vec3& a = soup_->positions[t.x];
-    const glm::vec3& b = soup_->positions[t.y];
-    const glm::vec3& c = soup_->positions[t.z];
-    const glm::dvec2 a2(a[u], a[v]), b2(b[u], b[v]), c2(c[u], c[v]);
-    const double w0 = edge(b2, c2, q), w1 = edge(c2, a2, q), w2 = edge(a2, b2, q);
-    const double area = w0 + w1 + w2;  // = twice the projected signed area, sign of normal[axis]
-    if (area == 0.0) continue;
-    const bool hit = area > 0.0 ? (w0 >= 0.0 && w1 >= 0.0 && w2 >= 0.0) : (w0 <= 0.0 && w1 <= 0.0 && w2 <= 0.0);
-    if (!hit) continue;
-    const double crossing = (w0 * double(a[axis]) + w1 * double(b[axis]) + w2 * double(c[axis])) / area;
-    if (crossing > double(p[axis])) winding += area > 0.0 ? 1 : -1;
+    double crossing = 0.0;
+    int sign = 0;
+    if (!line_crosses_triangle(soup_->positions[t.x], soup_->positions[t.y], soup_->positions[t.z], axis, q, crossing,
+                               sign))
+      continue;
+    if (crossing > double(p[axis])) winding += sign;
   }
   return winding;
 }
@@ -202,20 +210,15 @@ void WindingIndex::winding_along_line(const glm::vec3& origin, int axis, float s
   const std::size_t cell = std::size_t(bin.y) * std::size_t(bins_) + std::size_t(bin.x);
   for (std::uint32_t k = plane.start[cell]; k < plane.start[cell + 1]; ++k) {
     const glm::uvec3& t = soup_->triangles[plane.items[k]];
-    const glm::vec3& a = soup_->positions[t.x];
-    const glm::vec3& b = soup_->positions[t.y];
-    const glm::vec3& c = soup_->positions[t.z];
-    const glm::dvec2 a2(a[u], a[v]), b2(b[u], b[v]), c2(c[u], c[v]);
-    const double w0 = edge(b2, c2, q), w1 = edge(c2, a2, q), w2 = edge(a2, b2, q);
-    const double area = w0 + w1 + w2;
-    if (area == 0.0) continue;
-    const bool hit = area > 0.0 ? (w0 >= 0.0 && w1 >= 0.0 && w2 >= 0.0) : (w0 <= 0.0 && w1 <= 0.0 && w2 <= 0.0);
-    if (!hit) continue;
-    const double crossing = (w0 * double(a[axis]) + w1 * double(b[axis]) + w2 * double(c[axis])) / area;
+    double crossing = 0.0;
+    int sign = 0;
+    if (!line_crosses_triangle(soup_->positions[t.x], soup_->positions[t.y], soup_->positions[t.z], axis, q, crossing,
+                               sign))
+      continue;
     // Nodes strictly before the crossing count it: i * step < crossing - origin.
     const double first_after = std::ceil((crossing - double(origin[axis])) / double(step));  // first i not counting it
     const long last = std::min(long(out.size()), long(first_after));
-    for (long i = 0; i < last; ++i) out[std::size_t(i)] += area > 0.0 ? 1 : -1;
+    for (long i = 0; i < last; ++i) out[std::size_t(i)] += sign;
   }
 }
 

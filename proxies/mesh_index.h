@@ -10,6 +10,7 @@
 // least two of the three rays see a non-zero winding: this majority vote tolerates small holes
 // (a ray through a hole miscounts, the other two usually do not). Ray origins are nudged by a
 // fixed tiny offset so rays through shared edges and vertices do not count twice.
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -34,6 +35,23 @@ struct Box {
   float diagonal() const { return glm::length(hi - lo); }
 };
 Box bounds_of(std::span<const glm::vec3> points);
+
+// Calls visit(linear_index) for every cell of a dims-sized grid (x fastest) at Chebyshev
+// distance exactly `ring` from `center`: the shells of a nearest-neighbour search. Every cell of
+// ring r is at least (r − 1) cells from any point of the center cell, the bound both grid
+// searches stop on.
+template <class Visit>
+void for_each_cell_in_ring(const glm::ivec3& center, int ring, const glm::ivec3& dims, Visit&& visit) {
+  const glm::ivec3 lo = glm::max(center - ring, glm::ivec3(0));
+  const glm::ivec3 hi = glm::min(center + ring, dims - 1);
+  for (int z = lo.z; z <= hi.z; ++z)
+    for (int y = lo.y; y <= hi.y; ++y)
+      for (int x = lo.x; x <= hi.x; ++x) {
+        const glm::ivec3 offset = glm::abs(glm::ivec3(x, y, z) - center);
+        if (std::max(offset.x, std::max(offset.y, offset.z)) != ring) continue;
+        visit((std::size_t(z) * std::size_t(dims.y) + std::size_t(y)) * std::size_t(dims.x) + std::size_t(x));
+      }
+}
 
 // Uniform grid of triangle buckets for nearest-surface distance queries.
 class ClosestTriangleGrid {

@@ -87,19 +87,13 @@ int NearestPointGrid::nearest(const glm::vec3& p) const {
     // Same bound as ClosestTriangleGrid: ring r is at least (r - 1) cells away.
     const float bound = float(r - 1) * cell_;
     if (best >= 0 && bound > 0.0f && bound * bound >= best_d2) break;
-    const glm::ivec3 lo = glm::max(center - r, glm::ivec3(0));
-    const glm::ivec3 hi = glm::min(center + r, dims_ - 1);
-    for (int z = lo.z; z <= hi.z; ++z)
-      for (int y = lo.y; y <= hi.y; ++y)
-        for (int x = lo.x; x <= hi.x; ++x) {
-          if (std::max({std::abs(x - center.x), std::abs(y - center.y), std::abs(z - center.z)}) != r) continue;
-          const std::size_t i = (std::size_t(z) * std::size_t(dims_.y) + std::size_t(y)) * std::size_t(dims_.x) + std::size_t(x);
-          for (std::uint32_t k = start_[i]; k < start_[i + 1]; ++k) {
-            const glm::vec3 d = points_[items_[k]] - p;
-            const float d2 = glm::dot(d, d);
-            if (d2 < best_d2) best_d2 = d2, best = int(items_[k]);
-          }
-        }
+    for_each_cell_in_ring(center, r, dims_, [&](std::size_t i) {
+      for (std::uint32_t k = start_[i]; k < start_[i + 1]; ++k) {
+        const glm::vec3 d = points_[items_[k]] - p;
+        const float d2 = glm::dot(d, d);
+        if (d2 < best_d2) best_d2 = d2, best = int(items_[k]);
+      }
+    });
   }
   return best;
 }
