@@ -22,6 +22,19 @@ Environment daylight() {
   return e;
 }
 
+// The parts both built-ins share: a 2 km ground reaching the horizon, a far plane beyond it,
+// and 512×512 at 24 fps from frame 0.
+void set_outdoor_stage(Scene& scene, int frame_count) {
+  scene.ground = Ground{true, 2000.0f, glm::vec3(0.8f, 0.8f, 0.8f)};
+  scene.camera.near_m = 0.1f;
+  scene.camera.far_m = 1500.0f;  // beyond the ground edge, so the ground meets the horizon
+  scene.output.width = 512;
+  scene.output.height = 512;
+  scene.output.fps = 24.0;
+  scene.output.first_frame = 0;
+  scene.output.frame_count = frame_count;
+}
+
 }  // namespace
 
 Scene default_scene() {
@@ -39,23 +52,13 @@ Scene default_scene() {
   scene.characters.push_back(walker);
 
   scene.environment = daylight();
-  // A large ground reaches almost to the horizon, so no band of distant "below horizon" sky
-  // shows between its edge and the horizon.
-  scene.ground = Ground{true, 2000.0f, glm::vec3(0.8f, 0.8f, 0.8f)};
 
   FixedCamera camera;
   camera.position = glm::vec3(0.0f, 1.9f, 7.2f);
   camera.target = glm::vec3(0.0f, 0.9f, 0.0f);
   camera.fov_degrees = 50.0f;
   scene.camera.kind = camera;
-  scene.camera.near_m = 0.1f;
-  scene.camera.far_m = 1500.0f;  // beyond the ground edge, so it meets the horizon
-
-  scene.output.width = 512;
-  scene.output.height = 512;
-  scene.output.fps = 24.0;
-  scene.output.first_frame = 0;
-  scene.output.frame_count = 96;
+  set_outdoor_stage(scene, 96);
   return scene;
 }
 
@@ -91,8 +94,6 @@ Scene crowd_scene() {
   }
 
   scene.environment = daylight();
-  scene.ground = Ground{true, 2000.0f, glm::vec3(0.8f, 0.8f, 0.8f)};
-
   OrbitCamera camera;
   camera.target = glm::vec3(0.0f, 0.8f, 0.0f);
   camera.distance = 18.0f;
@@ -101,14 +102,7 @@ Scene crowd_scene() {
   camera.degrees_per_second = 12.0f;
   camera.fov_degrees = 50.0f;
   scene.camera.kind = camera;
-  scene.camera.near_m = 0.1f;
-  scene.camera.far_m = 1500.0f;  // beyond the ground edge, so it meets the horizon
-
-  scene.output.width = 512;
-  scene.output.height = 512;
-  scene.output.fps = 24.0;
-  scene.output.first_frame = 0;
-  scene.output.frame_count = 120;
+  set_outdoor_stage(scene, 120);
   return scene;
 }
 
