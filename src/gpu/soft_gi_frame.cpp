@@ -397,23 +397,17 @@ Result<image::ImageF> SoftGiFrame::read_indirect() const {
   return read_vec4_buffer(indirect_, settings_.receiver_width(), settings_.receiver_height());
 }
 
-Result<image::ImageF> SoftGiFrame::read_receiver_positions() const {
+Result<image::ImageF> SoftGiFrame::read_receiver_field(bool normals) const {
   auto bytes = readback(context_, receivers_);
   if (!bytes) return bytes.error();
   image::ImageF out{int(settings_.receiver_width()), int(settings_.receiver_height())};
   const auto* receivers = reinterpret_cast<const gpu_layout::Receiver*>(bytes->data());
-  for (std::size_t i = 0; i < out.pixels.size(); ++i) out.pixels[i] = receivers[i].position_depth;
+  for (std::size_t i = 0; i < out.pixels.size(); ++i)
+    out.pixels[i] = normals ? receivers[i].normal : receivers[i].position_depth;
   return out;
 }
-
-Result<image::ImageF> SoftGiFrame::read_receiver_normals() const {
-  auto bytes = readback(context_, receivers_);
-  if (!bytes) return bytes.error();
-  image::ImageF out{int(settings_.receiver_width()), int(settings_.receiver_height())};
-  const auto* receivers = reinterpret_cast<const gpu_layout::Receiver*>(bytes->data());
-  for (std::size_t i = 0; i < out.pixels.size(); ++i) out.pixels[i] = receivers[i].normal;
-  return out;
-}
+Result<image::ImageF> SoftGiFrame::read_receiver_positions() const { return read_receiver_field(false); }
+Result<image::ImageF> SoftGiFrame::read_receiver_normals() const { return read_receiver_field(true); }
 
 Result<image::ImageF> SoftGiFrame::read_shaded() const {
   return read_vec4_buffer(shaded_, settings_.receiver_width(), settings_.receiver_height());

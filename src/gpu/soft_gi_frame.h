@@ -106,6 +106,7 @@ class SoftGiFrame {
   SoftGiFrame(Context& context) : context_(context) {}
   Result<image::ImageF> read_vec4_buffer(const Buffer& buffer, std::uint32_t width, std::uint32_t height) const;
   Result<image::ImageF> read_gbuffer_image(const Image& image) const;
+  Result<image::ImageF> read_receiver_field(bool normals) const;
 
   struct Slot {
     Buffer constants;     // FrameConstants, host-visible uniform
