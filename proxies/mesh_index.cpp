@@ -158,14 +158,22 @@ void WindingIndex::build(const TriangleSoup& soup, int bins) {
   }
 }
 
-int WindingIndex::winding(const glm::vec3& p, int axis) const {
+bool WindingIndex::line_bin(const glm::vec3& point, int axis, glm::dvec2& q, std::size_t& cell) const {
   const int u = (axis + 1) % 3, v = (axis + 2) % 3;
   const Plane& plane = planes_[axis];
   // Irrational-looking offsets make exact hits on shared edges and vertices vanishingly rare.
-  const glm::dvec2 q(double(p[u]) + 0.7071067811 * double(nudge_), double(p[v]) + 0.5772156649 * double(nudge_));
+  q = glm::dvec2(double(point[u]) + 0.7071067811 * double(nudge_), double(point[v]) + 0.5772156649 * double(nudge_));
   const glm::ivec2 bin = glm::ivec2(glm::floor((glm::vec2(q) - plane.origin) / plane.cell));
-  if (bin.x < 0 || bin.y < 0 || bin.x >= bins_ || bin.y >= bins_) return 0;
-  const std::size_t cell = std::size_t(bin.y) * std::size_t(bins_) + std::size_t(bin.x);
+  if (bin.x < 0 || bin.y < 0 || bin.x >= bins_ || bin.y >= bins_) return false;
+  cell = std::size_t(bin.y) * std::size_t(bins_) + std::size_t(bin.x);
+  return true;
+}
+
+int WindingIndex::winding(const glm::vec3& p, int axis) const {
+  const Plane& plane = planes_[axis];
+  glm::dvec2 q;
+  std::size_t cell = 0;
+  if (!line_bin(p, axis, q, cell)) return 0;
   int winding = 0;
   for (std::uint32_t k = plane.start[cell]; k < plane.start[cell + 1]; ++k) {
     const glm::uvec3& t = soup_->triangles[plane.items[k]];
@@ -201,13 +209,11 @@ float DistanceGrid::sample(const glm::vec3& p) const {
 }
 
 void WindingIndex::winding_along_line(const glm::vec3& origin, int axis, float step, std::span<int> out) const {
-  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
   const Plane& plane = planes_[axis];
   std::fill(out.begin(), out.end(), 0);
-  const glm::dvec2 q(double(origin[u]) + 0.7071067811 * double(nudge_), double(origin[v]) + 0.5772156649 * double(nudge_));
-  const glm::ivec2 bin = glm::ivec2(glm::floor((glm::vec2(q) - plane.origin) / plane.cell));
-  if (bin.x < 0 || bin.y < 0 || bin.x >= bins_ || bin.y >= bins_) return;
-  const std::size_t cell = std::size_t(bin.y) * std::size_t(bins_) + std::size_t(bin.x);
+  glm::dvec2 q;
+  std::size_t cell = 0;
+  if (!line_bin(origin, axis, q, cell)) return;
   for (std::uint32_t k = plane.start[cell]; k < plane.start[cell + 1]; ++k) {
     const glm::uvec3& t = soup_->triangles[plane.items[k]];
     double crossing = 0.0;

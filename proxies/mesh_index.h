@@ -93,6 +93,10 @@ class WindingIndex {
     std::vector<std::uint32_t> items;
   };
   const TriangleSoup* soup_ = nullptr;
+  // The line through `point` along `axis`, nudged off shared edges: its (u, v) coordinates in q
+  // and the plane bin it falls in; false when it misses the binned area.
+  bool line_bin(const glm::vec3& point, int axis, glm::dvec2& q, std::size_t& cell) const;
+
   int bins_ = 0;
   float nudge_ = 0.0f;
   Plane planes_[3];
