@@ -37,6 +37,11 @@ Result<Node> convert_node(const tinygltf::Model& model, std::size_t index) {
   }
   node.mesh = source.mesh;
   node.skin = source.skin;
+  if (!source.weights.empty() && source.mesh < 0) return error_at(what, "weights set without a mesh");
+  for (double w : source.weights) {  // count checked against the mesh's targets in import_meshes
+    if (!std::isfinite(w)) return error_at(what, "weights contain NaN or infinity");
+    node.morph_weights.push_back(static_cast<float>(w));
+  }
 
   const auto bad_size = [&](const char* field, std::size_t size, std::size_t expected) {
     return error_at(what, std::string(field) + " has " + std::to_string(size) +

@@ -270,6 +270,16 @@ Status import_meshes(ImportContext& ctx, Character& character) {
     if (source.weights.empty()) mesh.default_morph_weights.assign(targets, 0.0f);
     character.meshes.push_back(std::move(mesh));
   }
+  for (std::size_t n = 0; n < character.nodes.size(); ++n) {  // node.weights override mesh.weights
+    const Node& node = character.nodes[n];
+    if (node.morph_weights.empty()) continue;
+    const std::size_t targets = character.meshes[static_cast<std::size_t>(node.mesh)].primitives[0].morph_targets.size();
+    if (node.morph_weights.size() != targets) {
+      return error_at("node " + std::to_string(n), "has " + std::to_string(node.morph_weights.size()) +
+                                                       " weights for " + std::to_string(targets) +
+                                                       " morph targets of mesh " + std::to_string(node.mesh));
+    }
+  }
   return {};
 }
 

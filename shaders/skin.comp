@@ -1,6 +1,7 @@
 #version 460
 // Skin pass: linear blend skinning of one primitive, formula for formula the CPU reference
-// anim::SkinningJob (anim/skinning.h): M = sum_k w_k S[j_k], p' = M p, n' = normalize(N n).
+// anim::SkinningJob (anim/skinning.h): M = sum_k w_k S[j_k], p' = M p, n' = normalize(N n),
+// after anim::MorphJob: p = p0 + sum_t w_t dp_t, n = n0 + sum_t w_t dn_t.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/layouts.h"
 
@@ -14,6 +15,9 @@ layout(std430, set = 0, binding = 4) readonly buffer SkinMatrices { mat4 skin_ma
 layout(std430, set = 0, binding = 5) readonly buffer NormalMatrices { mat4 normal_matrices[]; };
 layout(std430, set = 0, binding = 6) writeonly buffer OutPositions { vec4 out_positions[]; };
 layout(std430, set = 0, binding = 7) writeonly buffer OutNormals { vec4 out_normals[]; };
+layout(std430, set = 0, binding = 8) readonly buffer PositionDeltas { float position_deltas[]; };
+layout(std430, set = 0, binding = 9) readonly buffer NormalDeltas { float normal_deltas[]; };
+layout(std430, set = 0, binding = 10) readonly buffer MorphWeights { float morph_weights[]; };
 
 uint palette_index(uint flat_index) {
   uint word = packed_joints[flat_index >> 1];
@@ -33,10 +37,19 @@ void main() {
     if (push.use_normal_matrices != 0u) blended_normal += weight * mat3(normal_matrices[joint]);
   }
   vec3 position = vec3(bind_positions[3u * vertex], bind_positions[3u * vertex + 1u], bind_positions[3u * vertex + 2u]);
+  vec3 normal = vec3(0.0);
+  if (push.has_normals != 0u)
+    normal = vec3(bind_normals[3u * vertex], bind_normals[3u * vertex + 1u], bind_normals[3u * vertex + 2u]);
+  for (uint t = 0u; t < push.morph_targets; ++t) {
+    float w = morph_weights[t];
+    if (w == 0.0) continue;
+    uint at = 3u * (t * push.vertex_count + vertex);
+    position += w * vec3(position_deltas[at], position_deltas[at + 1u], position_deltas[at + 2u]);
+    if (push.has_normals != 0u) normal += w * vec3(normal_deltas[at], normal_deltas[at + 1u], normal_deltas[at + 2u]);
+  }
   out_positions[vertex] = vec4((blended * vec4(position, 1.0)).xyz, 1.0);
   if (push.has_normals != 0u) {
     if (push.use_normal_matrices == 0u) blended_normal = mat3(blended);
-    vec3 normal = vec3(bind_normals[3u * vertex], bind_normals[3u * vertex + 1u], bind_normals[3u * vertex + 2u]);
     vec3 skinned = blended_normal * normal;
     float length_squared = dot(skinned, skinned);
     out_normals[vertex] = vec4(length_squared > 0.0 ? skinned * inversesqrt(length_squared) : vec3(0.0), 0.0);

@@ -34,11 +34,18 @@ PROXYGI_CONST(uint, kSkinLocalSize, 64u);
 // Inputs per vertex: bind positions and normals as packed float triples, palette indices as
 // uint16 packed two per uint (low half first), weights as floats, `influences` of each per
 // vertex. Outputs: world-space vec4 positions (w = 1) and normals (w = 0).
+// Morph targets (anim::MorphJob) first: deltas as packed float triples, target-major
+// (target t, vertex v at t * vertex_count + v; zeros where a target has no deltas), one float
+// weight per target; summed in target order.
 struct SkinPush {
   uint vertex_count;
   uint influences;
   uint has_normals;          // 0: normals are not skinned (output left untouched)
   uint use_normal_matrices;  // 0: mat3(skin matrix) as in the CPU fast path
+  uint morph_targets;        // 0: no morphing (delta and weight buffers not read)
+  uint padding0;
+  uint padding1;
+  uint padding2;
 };
 
 // ---- the soft-GI frame (gbuffer, receivers, shadow_gather, exponentiate, indirect, upsample,
@@ -99,7 +106,7 @@ static_assert(sizeof(FrameConstants) == 128 + 16 * 7 + 16 * 27);
 static_assert(sizeof(GbufferPush) == 32);
 static_assert(sizeof(Receiver) == 32);
 static_assert(sizeof(CompositePush) == 16);
-static_assert(sizeof(SkinPush) == 16);
+static_assert(sizeof(SkinPush) == 32);
 }  // namespace proxygi::gpu_layout
 #endif
 

@@ -35,6 +35,8 @@ struct MeshDraw {
   std::vector<glm::vec4> colors;
   std::vector<Buffer> palettes;         // skin matrices, one buffer per ring slot, host-visible
   std::vector<Buffer> normal_palettes;  // their inverse-transposes (anim::normal_matrix layout)
+  std::size_t morph_offset = 0;         // the node's slice of PoseBuffers::morph_weights
+  std::vector<Buffer> morph_weights;    // that slice, one buffer per ring slot; empty: no morphs
 };
 
 struct SceneRenderer::Instance {
@@ -196,8 +198,6 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Context& context, c
       draw.skin = n.skin;
       const std::size_t palette_size = n.skin >= 0 ? character.skins[std::size_t(n.skin)].joints.size() : 1;
       for (const anim::Primitive& source : character.meshes[std::size_t(n.mesh)].primitives) {
-        if (!source.morph_targets.empty())
-          log_warning(character.source + ": mesh " + std::to_string(n.mesh) + ": morph targets are not applied by the GPU renderer");
         anim::Primitive primitive = source;
         if (n.skin < 0 || primitive.influences_per_vertex < 1) {  // rigid: one joint, the node itself
           primitive.influences_per_vertex = 1;
@@ -220,6 +220,14 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Context& context, c
                                         MemoryKind::host_visible);
           if (!palette) return palette.error();
           palettes->push_back(std::move(*palette));
+        }
+      draw.morph_offset = std::size_t(anim::morph_weight_offset(character, int(node)));
+      if (const int targets = anim::morph_target_count(character, int(node)); targets > 0)
+        for (std::uint32_t slot = 0; slot < slots; ++slot) {
+          auto weights = Buffer::create(context, std::size_t(targets) * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                        MemoryKind::host_visible);
+          if (!weights) return weights.error();
+          draw.morph_weights.push_back(std::move(*weights));
         }
       instance->meshes.push_back(std::move(draw));
     }
@@ -293,6 +301,9 @@ Result<std::vector<DrawItem>> SceneRenderer::prepare_frame(int frame, std::uint3
       const auto& normals = skinned ? instance->pose.normal_matrices[std::size_t(mesh.skin)] : rigid_normals;
       std::memcpy(mesh.palettes[slot].mapped(), palette.data(), palette.size() * sizeof(glm::mat4));
       std::memcpy(mesh.normal_palettes[slot].mapped(), normals.data(), normals.size() * sizeof(glm::mat4));
+      if (!mesh.morph_weights.empty())
+        std::memcpy(mesh.morph_weights[slot].mapped(), instance->pose.morph_weights.data() + mesh.morph_offset,
+                    std::size_t(mesh.morph_weights[slot].size()));
       for (std::size_t i = 0; i < mesh.primitives.size(); ++i)
         draws.push_back({&mesh.primitives[i].world_positions, &mesh.primitives[i].world_normals, &mesh.indices[i],
                          mesh.index_counts[i], mesh.colors[i]});
@@ -324,7 +335,8 @@ void SceneRenderer::record_skinning(VkCommandBuffer commands, std::uint32_t slot
   for (const auto& instance : instances_)
     for (const auto& mesh : instance->meshes)
       for (const auto& primitive : mesh.primitives)
-        skin_pass_->record(context_, commands, primitive, mesh.palettes[slot], &mesh.normal_palettes[slot]);
+        skin_pass_->record(context_, commands, primitive, mesh.palettes[slot], &mesh.normal_palettes[slot],
+                           mesh.morph_weights.empty() ? nullptr : &mesh.morph_weights[slot]);
 }
 
 Status SceneRenderer::begin_frame(int frame) {

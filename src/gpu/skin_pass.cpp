@@ -1,6 +1,8 @@
 #include "gpu/skin_pass.h"
 
+#include <algorithm>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "gpu/context.h"
@@ -17,11 +19,42 @@ std::span<const std::uint8_t> bytes_of(const std::vector<T>& values) {
   return {reinterpret_cast<const std::uint8_t*>(values.data()), values.size() * sizeof(T)};
 }
 
+// Dense target-major delta arrays (zeros where a target has none), as skin.comp reads them.
+Status upload_morph_targets(Context& context, const anim::Primitive& primitive, SkinnedPrimitive& out) {
+  const std::size_t vertices = primitive.positions.size(), targets = primitive.morph_targets.size();
+  if (targets == 0) return {};
+  std::vector<glm::vec3> positions(targets * vertices, glm::vec3(0.0f)), normals;
+  if (out.has_normals) normals.assign(targets * vertices, glm::vec3(0.0f));
+  for (std::size_t t = 0; t < targets; ++t) {
+    const anim::MorphTarget& target = primitive.morph_targets[t];
+    const std::string what = "skin pass: morph target " + std::to_string(t);
+    if (!target.position_deltas.empty() && target.position_deltas.size() != vertices)
+      return make_error(what + ": " + std::to_string(target.position_deltas.size()) + " position deltas, expected " +
+                        std::to_string(vertices));
+    if (!target.normal_deltas.empty() && target.normal_deltas.size() != vertices)
+      return make_error(what + ": " + std::to_string(target.normal_deltas.size()) + " normal deltas, expected " +
+                        std::to_string(vertices));
+    std::copy(target.position_deltas.begin(), target.position_deltas.end(), positions.begin() + std::ptrdiff_t(t * vertices));
+    if (out.has_normals)
+      std::copy(target.normal_deltas.begin(), target.normal_deltas.end(), normals.begin() + std::ptrdiff_t(t * vertices));
+  }
+  auto position_buffer = create_buffer_with_data(context, bytes_of(positions), kStorage);
+  if (!position_buffer) return position_buffer.error();
+  out.position_deltas = std::move(*position_buffer);
+  if (out.has_normals) {
+    auto normal_buffer = create_buffer_with_data(context, bytes_of(normals), kStorage);
+    if (!normal_buffer) return normal_buffer.error();
+    out.normal_deltas = std::move(*normal_buffer);
+  }
+  out.morph_targets = std::uint32_t(targets);
+  return {};
+}
+
 }  // namespace
 
 Result<SkinPass> SkinPass::create(const Context& context) {
   std::vector<Binding> bindings;
-  for (std::uint32_t binding = 0; binding < 8; ++binding)
+  for (std::uint32_t binding = 0; binding < 11; ++binding)
     bindings.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT});
   auto pipeline = Pipeline::compute(context, "skin.comp", bindings, sizeof(gpu_layout::SkinPush));
   if (!pipeline) return pipeline.error();
@@ -57,6 +90,7 @@ Result<SkinnedPrimitive> SkinPass::upload(Context& context, const anim::Primitiv
     if (!buffer) return buffer.error();
     *item.target = std::move(*buffer);
   }
+  if (Status morphs = upload_morph_targets(context, primitive, out); !morphs) return morphs.error();
   const VkDeviceSize output_bytes = VkDeviceSize(out.vertex_count) * sizeof(float) * 4;
   const VkBufferUsageFlags output_usage = kStorage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
   auto positions = Buffer::create(context, output_bytes, output_usage, MemoryKind::device_local);
@@ -69,7 +103,13 @@ Result<SkinnedPrimitive> SkinPass::upload(Context& context, const anim::Primitiv
 }
 
 void SkinPass::record(const Context& context, VkCommandBuffer commands, const SkinnedPrimitive& primitive,
-                      const Buffer& skin_matrices, const Buffer* normal_matrices) const {
+                      const Buffer& skin_matrices, const Buffer* normal_matrices,
+                      const Buffer* morph_weights) const {
+  // Without morphing the delta and weight bindings are never read: any buffer fills them.
+  const bool morphing = morph_weights != nullptr && primitive.morph_targets > 0;
+  const Buffer& position_deltas = morphing ? primitive.position_deltas : primitive.bind_positions;
+  const Buffer& normal_deltas =
+      morphing && primitive.has_normals ? primitive.normal_deltas : primitive.bind_normals;
   context.begin_label(commands, kName);
   pipeline_.bind(commands);
   DescriptorPush()
@@ -81,9 +121,13 @@ void SkinPass::record(const Context& context, VkCommandBuffer commands, const Sk
       .storage_buffer(5, normal_matrices ? *normal_matrices : skin_matrices)
       .storage_buffer(6, primitive.world_positions)
       .storage_buffer(7, primitive.world_normals)
+      .storage_buffer(8, position_deltas)
+      .storage_buffer(9, normal_deltas)
+      .storage_buffer(10, morphing ? *morph_weights : primitive.weights)
       .push(context, commands, pipeline_);
-  const gpu_layout::SkinPush push{primitive.vertex_count, primitive.influences, primitive.has_normals ? 1u : 0u,
-                                  normal_matrices ? 1u : 0u};
+  const gpu_layout::SkinPush push{primitive.vertex_count,        primitive.influences,
+                                  primitive.has_normals ? 1u : 0u, normal_matrices ? 1u : 0u,
+                                  morphing ? primitive.morph_targets : 0u, 0u, 0u, 0u};
   pipeline_.push_constants(commands, &push, sizeof(push));
   vkCmdDispatch(commands, group_count(primitive.vertex_count, gpu_layout::kSkinLocalSize), 1, 1);
 

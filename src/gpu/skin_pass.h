@@ -4,7 +4,8 @@
 //            skin matrices (and optionally normal matrices) as column-major mat4 in a buffer
 //   outputs: SkinnedPrimitive::world_positions / world_normals, vec4 per vertex, world space
 // CPU twin: anim::SkinningJob (anim/skinning.h); tests compare them within 1e-5 × the model's
-// bounding-box diagonal. Morph targets are applied on the CPU first (upload morphed positions).
+// bounding-box diagonal. Morph targets (anim::MorphJob) are applied before skinning, with one
+// weight per target read from a buffer the caller writes each frame.
 #include <memory>
 
 #include "anim/character.h"
@@ -24,6 +25,9 @@ struct SkinnedPrimitive {
   Buffer bind_normals;     // float × 3 per vertex (one dummy float when absent)
   Buffer joints;           // uint16 × influences per vertex, packed in uints
   Buffer weights;          // float × influences per vertex
+  std::uint32_t morph_targets = 0;
+  Buffer position_deltas;  // float × 3, target-major (layouts.h SkinPush); absent without targets
+  Buffer normal_deltas;    // same layout (zeros where a target has none); absent without normals
   Buffer world_positions;  // out: vec4 per vertex (also usable as a vertex-pulling input)
   Buffer world_normals;    // out: vec4 per vertex
 };
@@ -36,9 +40,12 @@ class SkinPass {
   static Result<SkinnedPrimitive> upload(Context& context, const anim::Primitive& primitive);
 
   // Records the dispatch. `normal_matrices` may be null: then mat3(skin matrix) is used.
-  // A barrier making the outputs visible to later vertex/fragment/compute reads is recorded too.
+  // `morph_weights`: one float per morph target (the primitive's slice of PoseBuffers::
+  // morph_weights); null = no morphing. A barrier making the outputs visible to later
+  // vertex/fragment/compute reads is recorded too.
   void record(const Context& context, VkCommandBuffer commands, const SkinnedPrimitive& primitive,
-              const Buffer& skin_matrices, const Buffer* normal_matrices) const;
+              const Buffer& skin_matrices, const Buffer* normal_matrices,
+              const Buffer* morph_weights = nullptr) const;
 
   static constexpr const char* kName = "skin";
 

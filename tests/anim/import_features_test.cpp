@@ -5,6 +5,7 @@
 
 #include "anim/gltf_import.h"
 #include "anim/import_builder.h"
+#include "anim/sampling.h"
 
 namespace proxygi::anim {
 namespace {
@@ -265,6 +266,20 @@ TEST(ImportFeatures, MorphTargetsAndWeightsChannel) {
   EXPECT_EQ(ch.components, 1);
   EXPECT_EQ(ch.values, (std::vector<float>{0.0f, 1.0f}));
   EXPECT_FLOAT_EQ(c.clips[0].duration, 3.0f);
+}
+
+TEST(ImportFeatures, NodeWeightsOverrideMeshWeights) {
+  auto b = testing::skinned_quad();
+  const int deltas = b.accessor_of(std::vector<float>{0, 0, 1, 0, 0, 2, 0, 0, 3, 0, 0, 4}, kFloat, 4, "VEC3");
+  b.json()["meshes"][0]["primitives"][0]["targets"] = {{{"POSITION", deltas}}};
+  b.json()["meshes"][0]["weights"] = {0.25};
+  b.json()["nodes"][3]["weights"] = {0.75};
+  const Character c = import_ok(b.gltf_bytes());
+  EXPECT_EQ(c.nodes.at(3).morph_weights, (std::vector<float>{0.75f}));
+  EXPECT_EQ(c.meshes.at(0).default_morph_weights, (std::vector<float>{0.25f}));
+  std::vector<float> weights(std::size_t(morph_weight_count(c)));
+  default_morph_weights(c, weights);
+  EXPECT_EQ(weights, (std::vector<float>{0.75f}));
 }
 
 TEST(ImportFeatures, SeveralSkinsAndMeshes) {

@@ -202,6 +202,20 @@ TEST(ImportValidation, WeightsChannelWithoutMorphTargets) {
   expect_refused(b.gltf_bytes(), {"animation 0 channel 0: animates weights of node 3 but mesh 0 has no morph targets"});
 }
 
+TEST(ImportValidation, NodeWeightsCountDiffersFromTargets) {
+  auto b = quad();
+  const int deltas = b.accessor_of(std::vector<float>(12, 0.5f), kFloat, 4, "VEC3");
+  b.json()["meshes"][0]["primitives"][0]["targets"] = {{{"POSITION", deltas}}};
+  b.json()["nodes"][3]["weights"] = {0.5, 0.5};
+  expect_refused(b.gltf_bytes(), {"node 3: has 2 weights for 1 morph targets of mesh 0"});
+}
+
+TEST(ImportValidation, NodeWeightsWithoutMesh) {
+  auto b = quad();
+  b.json()["nodes"][0]["weights"] = {1.0};
+  expect_refused(b.gltf_bytes(), {"node 0: weights set without a mesh"});
+}
+
 TEST(ImportValidation, NonFiniteFloats) {
   auto b = quad();
   const int positions = b.accessor_of(std::vector<float>{0, 0, 0, 1, 0, 0, 0, std::numeric_limits<float>::quiet_NaN(), 0, 1, 1, 0},
