@@ -203,9 +203,14 @@ enum class Exponential { hyb, ol };
 enum class Upsampling { bilateral, bilinear };
 enum class SplatMethod { raster, compute };
 enum class Tonemap { aces, reinhard, clamp };
+// image_space: the paper's method (proxy accumulation at 1/k receivers). vertex and
+// ambient_occlusion are the prior-work baselines of the speed-accuracy chart: SHEXP per receiver
+// vertex interpolated across triangles, and scalar AO from the same spheres.
+enum class ShadingMethod { image_space, vertex, ambient_occlusion };
 
 // Method settings (the paper's symbols in brackets).
 struct RenderSettings {
+  ShadingMethod method = ShadingMethod::image_space;
   int sh_order = 4;              // n bands, n^2 coefficients; 3..6
   int receiver_scale = 4;        // k: receivers at display size / k per axis; 1, 2, 4 or 8
   float shadow_eta = 15.0f;      // [eta] sphere-of-influence radius / proxy radius, > 1
