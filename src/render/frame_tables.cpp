@@ -23,6 +23,8 @@ FrameTables make_frame_tables(const sh::RgbSh& lighting, const FrameTableSetting
   sh::apply_influence_fade(tables.log_occlusion, settings.eta_shadow);
   tables.proxy_visibility = sh::make_proxy_visibility_table(3, settings.table_rows);
   sh::apply_influence_fade(tables.proxy_visibility, settings.eta_indirect);
+  tables.exact_indirect = sh::make_exact_indirect_table(3, settings.table_rows);
+  sh::apply_influence_fade(tables.exact_indirect, settings.eta_indirect);
   tables.optimal_linear = sh::make_optimal_linear_table(settings.order, settings.optimal_linear_rows);
 
   for (int channel = 0; channel < 3; ++channel)

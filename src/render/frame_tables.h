@@ -2,7 +2,8 @@
 // Everything the frame's shaders read besides geometry and proxies, built once per lighting and
 // settings on the CPU (and uploaded by the GPU frame): the log-occlusion and proxy-visibility ZH
 // tables with the sphere-of-influence fade, the OL (a, b) table, the LH(N) cube maps (one per
-// colour channel), and the order-3 irradiance vector L̃ = L * clamped cosine for indirect light.
+// colour channel), the order-3 irradiance vector L̃ = L * clamped cosine for indirect light and the
+// exact indirect operator M(s) (order 3, faded like the visibility table).
 // Lighting is the environment's SH projection with the ringing window applied.
 #include <array>
 #include <vector>
@@ -11,6 +12,7 @@
 
 #include "sh/environment.h"
 #include "sh/exponential.h"
+#include "sh/indirect.h"
 #include "sh/occlusion_tables.h"
 
 namespace proxygi::render {
@@ -19,7 +21,7 @@ struct FrameTableSettings {
   int order = 4;                  // SH order of shadows, 3..6
   float eta_shadow = 15.0f;       // sphere of influence of shadows, in radii
   float eta_indirect = 10.0f;     // sphere of influence of indirect light, in radii
-  int table_rows = 256;           // log-occlusion and visibility tables
+  int table_rows = 256;           // log-occlusion, visibility and exact-indirect tables
   int optimal_linear_rows = 256;  // OL table
   int cube_face_size = 16;        // LH cube map texels per face edge
   bool window = true;             // apply the ringing window cos(π l / (2h)), h = 2n, to L
@@ -31,6 +33,7 @@ struct FrameTables {
   sh::ZonalTable log_occlusion;                // order settings.order, faded at 1/η_shadow
   sh::ZonalTable proxy_visibility;             // order 3, faded at 1/η_indirect
   sh::OptimalLinearTable optimal_linear;       // order settings.order
+  sh::ExactIndirectTable exact_indirect;       // M(s), order 3, faded at 1/η_indirect
   std::array<sh::LightingCubeMap, 3> lighting_cube;  // LH(N) per channel r, g, b
   std::array<std::array<float, 9>, 3> irradiance_order3;  // L̃ per channel, order 3
 };

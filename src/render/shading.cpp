@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/exact_indirect.h"
 #include "sh/indirect.h"
 #include "sh/tangent_plane.h"
 #include "sh/basis.h"
@@ -111,8 +112,17 @@ DirectResult exponentiate_and_shade(const FrameTables& tables, std::span<const f
   return result;
 }
 
+const char* indirect_operator_name(IndirectOperator op) {
+  switch (op) {
+    case IndirectOperator::point: return "point";
+    case IndirectOperator::averaged: return "averaged";
+    case IndirectOperator::exact: return "exact";
+  }
+  return "unknown";
+}
+
 IndirectResult accumulate_indirect(const FrameTables& tables, const glm::vec3& p, const glm::vec3& normal,
-                                   std::span<const Sphere> spheres, float occlusion_dc) {
+                                   std::span<const Sphere> spheres, float occlusion_dc, IndirectOperator op) {
   IndirectResult result;
   float normal_basis[9];
   sh::evaluate_basis(3, normal, std::span<float>(normal_basis, 9));
@@ -123,35 +133,50 @@ IndirectResult accumulate_indirect(const FrameTables& tables, const glm::vec3& p
     if (outside_influence(p, sphere, tables.settings.eta_indirect)) continue;
     const auto seen = sh::proxy_at_receiver(p, normal, {sphere.center, sphere.radius});
     if (!seen || seen->sine <= minimum_sine) continue;
-    float visibility[3];
-    tables.proxy_visibility.lookup(seen->sine, std::span<float>(visibility, 3));
-    float basis[9];
-    sh::evaluate_basis(3, seen->direction, std::span<float>(basis, 9));
-    const auto fit = sh::averaged_indirect_polynomial(seen->sine);
-    const glm::vec3 averaged{float(fit[0]), float(fit[1]), float(fit[2])};
-    // V_i · H(N) and κ_i = rot(D, d) · L̃, band by band.
-    float seen_cosine = 0.0f;
-    glm::vec3 kappa(0.0f);
-    for (int l = 0; l < 3; ++l) {
-      float band_normal = 0.0f;
-      glm::vec3 band_light(0.0f);
-      for (int m = -l; m <= l; ++m) {
-        const int i = l * (l + 1) + m;
-        band_normal += basis[i] * normal_basis[i];
-        for (int c = 0; c < 3; ++c) band_light[c] += basis[i] * tables.irradiance_order3[std::size_t(c)][std::size_t(i)];
+    if (op == IndirectOperator::exact) {
+      // H(N) · I_i = W · L̃ per channel (render/exact_indirect.h); the table carries the fade.
+      const std::array<float, 9> weights = exact_indirect_weights(tables.exact_indirect, seen->sine, seen->direction, normal);
+      glm::vec3 radiance(0.0f);
+      for (int i = 0; i < 9; ++i)
+        for (int c = 0; c < 3; ++c) radiance[c] += weights[std::size_t(i)] * tables.irradiance_order3[std::size_t(c)][std::size_t(i)];
+      summed += sphere.albedo / kPi * glm::max(radiance, glm::vec3(0.0f));
+    } else {
+      float visibility[3];
+      tables.proxy_visibility.lookup(seen->sine, std::span<float>(visibility, 3));
+      float basis[9];
+      sh::evaluate_basis(3, seen->direction, std::span<float>(basis, 9));
+      // The zonal kernel K_l: D_l (the averaged operator's polynomial fit) or, for the point
+      // operator, K_l = (−1)^l sqrt((2l+1)/4π), whose rotation to d̂ is y(−d̂).
+      const auto fit = sh::averaged_indirect_polynomial(seen->sine);
+      const glm::vec3 averaged{float(fit[0]), float(fit[1]), float(fit[2])};
+      // V_i · H(N) and κ_i = rot(K, d) · L̃, band by band.
+      float seen_cosine = 0.0f;
+      glm::vec3 kappa(0.0f);
+      for (int l = 0; l < 3; ++l) {
+        float band_normal = 0.0f;
+        glm::vec3 band_light(0.0f);
+        for (int m = -l; m <= l; ++m) {
+          const int i = l * (l + 1) + m;
+          band_normal += basis[i] * normal_basis[i];
+          for (int c = 0; c < 3; ++c) band_light[c] += basis[i] * tables.irradiance_order3[std::size_t(c)][std::size_t(i)];
+        }
+        const float scale = zonal_scale(l);
+        seen_cosine += scale * visibility[l] * scale * cosine[l] * band_normal;
+        if (op == IndirectOperator::point)
+          kappa += (l % 2 == 0 ? 1.0f : -1.0f) * band_light;  // sqrt(4π/(2l+1)) K_l = (−1)^l
+        else
+          kappa += scale * averaged[l] * band_light;
       }
-      const float scale = zonal_scale(l);
-      seen_cosine += scale * visibility[l] * scale * cosine[l] * band_normal;
-      kappa += scale * averaged[l] * band_light;
+      summed += sphere.albedo / kPi * glm::max(kappa, glm::vec3(0.0f)) * std::max(seen_cosine, 0.0f);
     }
-    summed += sphere.albedo / kPi * glm::max(kappa, glm::vec3(0.0f)) * std::max(seen_cosine, 0.0f);
-    // ω_i, faded like the table so the normalization fades with it.
+    // ω_i, faded like the tables so the normalization fades with them.
     const float solid_angle = 2.0f * kPi * (1.0f - std::sqrt(std::max(1.0f - seen->sine * seen->sine, 0.0f)));
     result.summed_solid_angle += solid_angle * sh::influence_fade_weight(seen->sine, tables.settings.eta_indirect,
                                                                          tables.proxy_visibility.rows);
   }
   if (result.summed_solid_angle > 0.0f) {
     // ξ_p = (V_p)_0 / (ω_p / √4π), V_p = 1 − O_p; clamped to [0, 1] so overlap never brightens.
+    // The same for every operator.
     const float covered_dc = std::max(kSqrtFourPi - occlusion_dc, 0.0f);
     const float normalization = std::clamp(covered_dc * kSqrtFourPi / result.summed_solid_angle, 0.0f, 1.0f);
     result.irradiance = summed * normalization;

@@ -3,7 +3,7 @@
 // formula and in the same float order where it matters; GPU tests compare them at sample pixels.
 //   accumulate_log_occlusion  ↔ shadow_gather.comp   f = Σ_i rot(O_log(s_i), d_i)
 //   exponentiate_and_shade    ↔ exponentiate.comp    O_p = HYB(f), E_direct = O_p · LH(N)
-//   accumulate_indirect       ↔ indirect.comp        E_ind = ξ_p Σ_i (a_i/π) κ_i (V_i · H(N))
+//   accumulate_indirect       ↔ indirect.comp        E_ind = ξ_p Σ_i (a_i/π) max(I_i · H(N), 0) per operator
 //   select_receiver           ↔ receivers.comp       which display texel a receiver stands for
 //   upsample                  ↔ upsample_composite.comp  eq. 11 with the all-weights-vanish fallback
 //   tonemap                   ↔ upsample_composite.comp  (with the sRGB encoding)
@@ -40,12 +40,22 @@ DirectResult exponentiate_and_shade(const FrameTables& tables, std::span<const f
 // face edges). out holds n² values.
 void lookup_lighting_cube(const sh::LightingCubeMap& cube, const glm::vec3& normal, std::span<float> out);
 
+// How a proxy's radiance I_i is formed from the order-3 irradiance L̃ (paper §5; sh/indirect.h).
+// Each is its own compiled variant of indirect.comp ("indirect.comp:<name>").
+//   point     eq. 13: I_i = κ_i V_i, κ_i = L̃ · y(−d̂_i)           (radiance at the proxy centre's back)
+//   averaged  eq. 15: I_i = κ_i V_i, κ_i = rot(D(s_i), d̂_i) · L̃   (D by the paper's polynomial fit)
+//   exact     eq. 17: I_i = R⁻¹ M(s_i) R L̃                        (M tabulated, render/exact_indirect.h)
+// point and averaged shade max(κ_i, 0) max(V_i · H(N), 0); exact shades max(I_i · H(N), 0).
+enum class IndirectOperator { point = 0, averaged = 1, exact = 2 };
+const char* indirect_operator_name(IndirectOperator op);
+
 struct IndirectResult {
   glm::vec3 irradiance{0.0f};   // normalized indirect E, rgb
   float summed_solid_angle = 0; // ω_p (after the influence fade)
 };
 IndirectResult accumulate_indirect(const FrameTables& tables, const glm::vec3& p, const glm::vec3& normal,
-                                   std::span<const Sphere> spheres, float occlusion_dc);
+                                   std::span<const Sphere> spheres, float occlusion_dc,
+                                   IndirectOperator op = IndirectOperator::averaged);
 
 // The display texel that receiver (rx, ry) stands for (receivers.comp): the center of its k×k
 // block, or, when that is background (eye depth ≤ 0), the first covered texel of the block in

@@ -113,6 +113,14 @@ ExactIndirectTable make_exact_indirect_table(int order, int rows) {
   return table;
 }
 
+void apply_influence_fade(ExactIndirectTable& table, float eta, int fade_rows) {
+  const std::size_t count = std::size_t(table.order) * std::size_t(table.order), row_size = count * count;
+  for (int i = 0; i < table.rows; ++i) {
+    const float weight = influence_fade_weight(float(i) / float(table.rows - 1), eta, table.rows, fade_rows);
+    for (std::size_t k = 0; k < row_size; ++k) table.values[std::size_t(i) * row_size + k] *= weight;
+  }
+}
+
 Eigen::MatrixXd point_indirect_operator(int order, double s) {
   const Eigen::VectorXd visibility = zonal_to_full(order, proxy_visibility_zonal(order, s));
   return visibility * canonical_kernel(order, point_indirect_zonal(order)).transpose();

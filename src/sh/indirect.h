@@ -48,6 +48,10 @@ struct ExactIndirectTable {
   std::vector<float> values;
 };
 ExactIndirectTable make_exact_indirect_table(int order, int rows = 64);
+// Multiplies row i by influence_fade_weight(s_i, eta, rows, fade_rows) (sh/occlusion_tables.h),
+// the sphere-of-influence fade the visibility table gets: the proxy's contribution goes to 0
+// smoothly at s = 1/eta.
+void apply_influence_fade(ExactIndirectTable& table, float eta, int fade_rows = 4);
 
 // Eq. 17: the exact operator for a proxy in direction dhat (unit): R^-1 M(theta) R Ltilde.
 std::vector<double> apply_exact_indirect(int order, double s, const glm::dvec3& direction, std::span<const double> lighting_convolved);
