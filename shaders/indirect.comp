@@ -1,9 +1,13 @@
 #version 460
-// Indirect accumulation (frame step 6), order 3 (paper §5, averaged operator D by its polynomial
-// fit): E_ind = ξ_p Σ_i (albedo_i/π) κ_i (V_i · H(N)), κ_i = rot(D(s_i), d_i) · L̃,
+// Indirect accumulation (frame step 6), order 3 (paper §5), compiled once per operator with
+// -DINDIRECT_OPERATOR=0 (point, eq. 13), 1 (averaged, eq. 15, D by its polynomial fit) or 2
+// (exact, eq. 17) as "indirect.comp:<operator>" (render::IndirectOperator):
+//   point, averaged: E_ind = ξ_p Σ_i (albedo_i/π) max(κ_i, 0) max(V_i · H(N), 0), κ_i = rot(K, d_i) · L̃
+//                    with K_l = D_l(s_i) or (−1)^l sqrt((2l+1)/4π) (then rot(K, d) = y(−d))
+//   exact:           E_ind = ξ_p Σ_i (albedo_i/π) max(H(N) · R⁻¹ M(s_i) R L̃, 0), M from binding 7
 // ξ_p = clamp((V_p)_0 / (ω_p/√4π), 0, 1) with (V_p)_0 = √4π − (O_p)_0 from the exponentiation.
 // Output per receiver: (E_r, E_g, E_b, ω_p), and the packed (E_direct + E_indirect, eye depth)
-// upsampling reads. CPU twin: render::accumulate_indirect.
+// upsampling reads. CPU twin: render::accumulate_indirect (exact: render/exact_indirect.h).
 #extension GL_GOOGLE_include_directive : require
 #define FRAME_TILE_CULLING
 #include "frame_common.glsl"
@@ -18,6 +22,13 @@ layout(std430, set = 0, binding = 4) readonly buffer Direct { vec4 direct[]; };
 layout(std430, set = 0, binding = 5) writeonly buffer Indirect { vec4 indirect[]; };
 // What upsampling reads per tap, packed into one vec4: (E_direct + E_indirect, eye depth).
 layout(std430, set = 0, binding = 6) writeonly buffer Shaded { vec4 shaded[]; };
+
+#ifndef INDIRECT_OPERATOR
+#error "compile with -DINDIRECT_OPERATOR=0 (point), 1 (averaged) or 2 (exact)"
+#endif
+#if INDIRECT_OPERATOR == 2
+#include "indirect_exact.glsl"
+#endif
 
 float influence_fade(float s, float eta, int rows) {
   float width = 4.0 / float(rows - 1);
@@ -63,10 +74,20 @@ void main() {
     vec3 direction;
     float sine;
     if (!proxy_seen_from(p, normal, sphere.xyz, sphere.w, direction, sine) || sine <= minimum_sine) continue;
+#if INDIRECT_OPERATOR == 2
+    float weights[9];
+    exact_indirect_weights(sine, direction, normal, weights);
+    vec3 radiance = vec3(0.0);
+    for (int c = 0; c < 9; ++c)
+      radiance += weights[c] * vec3(frame.irradiance_sh[c].x, frame.irradiance_sh[9 + c].x, frame.irradiance_sh[18 + c].x);
+    summed += proxies[i].albedo.rgb / kPi * max(radiance, vec3(0.0));
+#else
     float basis[9];
     sh_eval_basis_3(direction, basis);
+#if INDIRECT_OPERATOR == 1
     vec3 averaged = vec3(0.28209, (0.08432 * sine - 0.25073) * sine - 0.32494,
                          ((-0.22230 * sine + 0.22502) * sine + 0.47398) * sine + 0.15950);
+#endif
     float seen_cosine = 0.0;
     vec3 kappa = vec3(0.0);
     for (int l = 0; l < 3; ++l) {
@@ -81,9 +102,14 @@ void main() {
       }
       float scale = zonal_scale(l);
       seen_cosine += scale * visibility * scale * cosine[l] * band_normal;
+#if INDIRECT_OPERATOR == 1
       kappa += scale * averaged[l] * band_light;
+#else
+      kappa += ((l & 1) == 0 ? 1.0 : -1.0) * band_light;  // sqrt(4π/(2l+1)) K_l = (−1)^l
+#endif
     }
     summed += proxies[i].albedo.rgb / kPi * max(kappa, vec3(0.0)) * max(seen_cosine, 0.0);
+#endif
     float solid_angle = 2.0 * kPi * (1.0 - sqrt(max(1.0 - sine * sine, 0.0)));
     solid_angle_sum += solid_angle * influence_fade(sine, eta, rows);
   }

@@ -35,7 +35,8 @@ const char* frame_pass_name(FramePass pass) {
   return "unknown";
 }
 
-Result<FramePipelines> FramePipelines::create(const Context& context, int order) {
+Result<FramePipelines> FramePipelines::create(const Context& context, int order,
+                                              render::IndirectOperator indirect_operator) {
   if (order < 3 || order > 6) return make_error("frame: SH order " + std::to_string(order) + " is not in 3..6");
   const std::string suffix = ":order" + std::to_string(order);
   FramePipelines out;
@@ -63,7 +64,8 @@ Result<FramePipelines> FramePipelines::create(const Context& context, int order)
       {&out.receivers, "receivers.comp", {kUniform, kImage, kImage, kStorage}, 0},
       {&out.shadow, "shadow_gather.comp" + suffix, {kUniform, kStorage, kUniform, kStorage, kStorage}, 0},
       {&out.exponentiate, "exponentiate.comp" + suffix, {kUniform, kStorage, kStorage, kStorage, kStorage, kStorage}, 0},
-      {&out.indirect, "indirect.comp", {kUniform, kStorage, kUniform, kStorage, kStorage, kStorage, kStorage}, 0},
+      {&out.indirect, std::string("indirect.comp:") + render::indirect_operator_name(indirect_operator),
+       {kUniform, kStorage, kUniform, kStorage, kStorage, kStorage, kStorage, kStorage}, 0},
       {&out.upsample_composite, "upsample_composite.comp",
        {kUniform, kImage, kImage, kStorage, kStorage, kStorage, kImage, kStorage, kStorage, kStorage},
        sizeof(gpu_layout::CompositePush)},

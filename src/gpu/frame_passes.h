@@ -5,13 +5,15 @@
 //   receivers    position+depth, normal images           → receivers (1/k)
 //   shadow       receivers, proxies, log-occlusion table → log-occlusion SH per receiver
 //   exponentiate receivers, log SH, OL table, LH cubes   → direct E and (O_p)_0 per receiver
-//   indirect     receivers, proxies, visibility table, direct → indirect E and ω_p per receiver,
+//   indirect     receivers, proxies, visibility table, direct, exact-operator table → indirect E
+//                and ω_p per receiver,
 //                and the packed shaded buffer (E_direct + E_indirect, eye depth)
 //   upsample_composite  G-buffer, receiver normals, shaded, environment → display-resolution
 //                irradiance (AOV), HDR radiance and tonemapped sRGB (steps 7 and 8 fused)
 #include <array>
 
 #include "gpu/pipeline.h"
+#include "render/shading.h"
 
 namespace proxygi::gpu {
 
@@ -28,8 +30,10 @@ struct FramePipelines {
   Pipeline indirect;
   Pipeline upsample_composite;
 
-  // Builds every pipeline for SH order 3..6 (the order-dependent shaders are embedded per order).
-  static Result<FramePipelines> create(const Context& context, int order);
+  // Builds every pipeline for SH order 3..6 (the order-dependent shaders are embedded per order)
+  // and the indirect gather of one operator (embedded per operator).
+  static Result<FramePipelines> create(const Context& context, int order,
+                                       render::IndirectOperator indirect_operator = render::IndirectOperator::averaged);
 };
 
 inline constexpr VkFormat kGbufferFormat = VK_FORMAT_R32G32B32A32_SFLOAT;

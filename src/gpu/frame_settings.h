@@ -15,6 +15,7 @@ struct FrameSettings {
   render::UpsampleMode upsample = render::UpsampleMode::bilateral;
   float bilateral_depth_epsilon = 0.05f;  // ε of eq. 11, meters of eye depth
   bool indirect = true;
+  render::IndirectOperator indirect_operator = render::IndirectOperator::averaged;  // its own pipeline variant
   render::Tonemap tonemap = render::Tonemap::aces;
   float exposure = 1.0f;              // multiplier before the tonemap (2^EV)
   std::uint32_t frames_in_flight = 2; // ring-buffer slots for per-frame uploads

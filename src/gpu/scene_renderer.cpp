@@ -118,6 +118,9 @@ FrameSettings frame_settings(const scene::Scene& scene) {
   settings.upsample = scene.render.upsampling == scene::Upsampling::bilinear ? render::UpsampleMode::bilinear
                                                                               : render::UpsampleMode::bilateral;
   settings.indirect = scene.render.indirect;
+  settings.indirect_operator = scene.render.indirect_operator == scene::IndirectOperator::point   ? render::IndirectOperator::point
+                               : scene.render.indirect_operator == scene::IndirectOperator::exact ? render::IndirectOperator::exact
+                                                                                                  : render::IndirectOperator::averaged;
   settings.tonemap = scene.render.tonemap == scene::Tonemap::reinhard ? render::Tonemap::reinhard
                      : scene.render.tonemap == scene::Tonemap::clamp  ? render::Tonemap::clamp
                                                                       : render::Tonemap::aces;
@@ -126,8 +129,6 @@ FrameSettings frame_settings(const scene::Scene& scene) {
 }
 
 void warn_unsupported(const scene::RenderSettings& render) {
-  if (render.indirect_operator != scene::IndirectOperator::averaged)
-    log_warning("render.indirect_operator: only 'averaged' runs on the GPU; using it");
   if (render.splat != scene::SplatMethod::compute)
     log_warning("render.splat: only the 'compute' gather runs on the GPU; using it");
 }

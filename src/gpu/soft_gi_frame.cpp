@@ -63,7 +63,7 @@ Result<std::unique_ptr<SoftGiFrame>> SoftGiFrame::create(Context& context, const
   std::unique_ptr<SoftGiFrame> frame(new SoftGiFrame(context));
   frame->settings_ = settings;
   frame->order_ = tables.settings.order;
-  auto pipelines = FramePipelines::create(context, frame->order_);
+  auto pipelines = FramePipelines::create(context, frame->order_, settings.indirect_operator);
   if (!pipelines) return pipelines.error();
   frame->pipelines_ = std::move(*pipelines);
 
@@ -115,6 +115,7 @@ Result<std::unique_ptr<SoftGiFrame>> SoftGiFrame::create(Context& context, const
   const TableUpload uploads[] = {
       {&frame->log_table_, bytes_of(std::span<const float>(tables.log_occlusion.values))},
       {&frame->visibility_table_, bytes_of(std::span<const float>(tables.proxy_visibility.values))},
+      {&frame->exact_indirect_table_, bytes_of(std::span<const float>(tables.exact_indirect.values))},
       {&frame->optimal_linear_, bytes_of(std::span<const glm::vec2>(optimal_linear))},
       {&frame->lighting_cube_, bytes_of(std::span<const float>(cubes))},
       {&frame->environment_, bytes_of(std::span<const glm::vec4>(environment.pixels))},
@@ -309,6 +310,7 @@ void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot, Fram
           .storage_buffer(4, direct_)
           .storage_buffer(5, indirect_)
           .storage_buffer(6, shaded_)
+          .storage_buffer(7, exact_indirect_table_)  // read by the exact variant only
           .push(context_, commands, pipelines_.indirect);
       dispatch_2d(receiver_width, receiver_height);
       memory_barrier(commands);

@@ -122,6 +122,7 @@ class SoftGiFrame {
   Image position_depth_, normal_, albedo_, depth_;
   Buffer receivers_, log_occlusion_, direct_, indirect_, shaded_, irradiance_, hdr_, ldr_;
   Buffer log_table_, visibility_table_, optimal_linear_, lighting_cube_, environment_;
+  Buffer exact_indirect_table_;  // M(s) rows of render::FrameTables::exact_indirect
   std::uint32_t environment_width_ = 0, environment_height_ = 0;
   std::vector<Slot> slots_;
   float log_table_rows_ = 0, visibility_rows_ = 0, optimal_linear_rows_ = 0, optimal_linear_max_ = 0, cube_size_ = 0;
