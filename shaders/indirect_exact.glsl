@@ -25,7 +25,9 @@ void exact_indirect_weights(float sine, vec3 direction, vec3 normal, out float w
   for (int l = 0; l < 3; ++l)
     for (int m = -l; m <= l; ++m) lobe[l * (l + 1) + m] *= zonal_scale(l) * cosine[l];
 
-  // w = M(s)ᵀ H(R N), rows interpolated like ZONAL_LOOKUP.
+  // w = M(s)ᵀ H(R N), rows interpolated like ZONAL_LOOKUP, over the 19 entries with m_j = m_k
+  // (the others are zero: render::kExactIndirectEntries).
+  const int entries[19] = int[](0, 2, 6, 18, 20, 24, 54, 56, 60, 10, 14, 46, 50, 30, 34, 66, 70, 40, 80);
   int rows = int(exact_table.length()) / 81;
   float position = clamp(sine, 0.0, 1.0) * float(rows - 1);
   int row = min(int(position), rows - 2);
@@ -33,12 +35,12 @@ void exact_indirect_weights(float sine, vec3 direction, vec3 normal, out float w
   int low = row * 81;
   float w[9];
   for (int k = 0; k < 9; ++k) w[k] = 0.0;
-  for (int j = 0; j < 9; ++j)
-    for (int k = 0; k < 9; ++k) {
-      float m_low = exact_table[low + j * 9 + k];
-      float m_high = exact_table[low + 81 + j * 9 + k];
-      w[k] += lobe[j] * (m_low + t * (m_high - m_low));
-    }
+  for (int e = 0; e < 19; ++e) {
+    int entry = entries[e];
+    float m_low = exact_table[low + entry];
+    float m_high = exact_table[low + 81 + entry];
+    w[entry % 9] += lobe[entry / 9] * (m_low + t * (m_high - m_low));
+  }
 
   weights[0] = w[0];
   vec3 u = vec3(-w[3], -w[1], w[2]);

@@ -42,15 +42,15 @@ std::array<float, 9> exact_indirect_weights(const sh::ExactIndirectTable& table,
   for (int l = 0; l < 3; ++l)
     for (int m = -l; m <= l; ++m) cosine_lobe[l * (l + 1) + m] *= std::sqrt(4.0f * kPi / float(2 * l + 1)) * cosine[l];
 
-  // w = M(s)ᵀ H(R N), M interpolated between rows like ZONAL_LOOKUP.
+  // w = M(s)ᵀ H(R N) over the non-zero entries, M interpolated between rows like ZONAL_LOOKUP.
   const float position = std::clamp(s, 0.0f, 1.0f) * float(table.rows - 1);
   const int row = std::min(int(position), table.rows - 2);
   const float t = position - float(row);
   const float* low = table.values.data() + std::size_t(row) * 81;
   const float* high = low + 81;
   float w[9] = {};
-  for (int j = 0; j < 9; ++j)
-    for (int k = 0; k < 9; ++k) w[k] += cosine_lobe[j] * (low[j * 9 + k] + t * (high[j * 9 + k] - low[j * 9 + k]));
+  for (const int entry : kExactIndirectEntries)
+    w[entry % 9] += cosine_lobe[entry / 9] * (low[entry] + t * (high[entry] - low[entry]));
 
   std::array<float, 9> weights{};
   weights[0] = w[0];

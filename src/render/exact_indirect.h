@@ -18,7 +18,10 @@
 // sparse and written out in closed form.
 //
 // M(s) comes from sh::ExactIndirectTable (row-major M_jk, rows over s, linearly interpolated
-// like every other frame table, element by element, at s (rows − 1)).
+// like every other frame table, element by element, at s (rows − 1)). The canonical proxy is
+// symmetric about z and under mirrors through z, so M_jk = 0 unless j and k have the same m: only
+// the 19 entries of kExactIndirectEntries are read (the rest are zero to rounding; render_tests
+// checks the table).
 #include <array>
 
 #include <glm/glm.hpp>
@@ -26,6 +29,11 @@
 #include "sh/indirect.h"
 
 namespace proxygi::render {
+
+// Flat indices j * 9 + k of the entries of M(s) with m_j = m_k (order 3): m = 0 couples
+// coefficients 0, 2, 6; m = −1: 1, 5; m = 1: 3, 7; m = −2: 4; m = 2: 8.
+inline constexpr int kExactIndirectEntries[19] = {0,  2,  6,  18, 20, 24, 54, 56, 60, 10,
+                                                  14, 46, 50, 30, 34, 66, 70, 40, 80};
 
 // W (order 3, world frame) with W · L̃_c = H(N) · I_c for the proxy seen in unit direction
 // `direction` with s = sin θ. normal must be unit. The table must be order 3.

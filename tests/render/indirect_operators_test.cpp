@@ -91,6 +91,22 @@ TEST(RenderExactIndirect, TwinMatchesTheDoubleOperatorWithinTheTableInterpolatio
               worst_interpolation, worst_used);
 }
 
+TEST(RenderExactIndirect, TableIsZeroOutsideTheEqualMEntries) {
+  // Why the twin and the shader read only kExactIndirectEntries.
+  const sh::ExactIndirectTable table = sh::make_exact_indirect_table(3, 256);
+  bool used[81] = {};
+  for (int entry : kExactIndirectEntries) used[entry] = true;
+  for (int row = 0; row < table.rows; ++row) {
+    float largest = 0.0f, skipped = 0.0f;
+    for (int e = 0; e < 81; ++e) {
+      const float value = std::abs(table.values[std::size_t(row) * 81 + std::size_t(e)]);
+      float& bucket = used[e] ? largest : skipped;
+      bucket = std::max(bucket, value);
+    }
+    EXPECT_LE(skipped, 1e-6f * largest) << "row " << row;
+  }
+}
+
 TEST(RenderExactIndirect, WrongRotationWouldFail) {
   // The test above can fail: the canonical (unrotated) operator differs from the rotated one by
   // far more than the interpolation bound for a tilted proxy.
