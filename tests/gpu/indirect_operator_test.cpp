@@ -99,9 +99,16 @@ TEST_F(IndirectOperatorTest, EachOperatorMatchesItsCpuTwinAtSampleReceivers) {
   // The variants really differ under this sky (else the comparisons above could not tell them apart).
   for (std::size_t a = 0; a < results.size(); ++a)
     for (std::size_t b = a + 1; b < results.size(); ++b) {
-      float largest = 0.0f;
-      for (std::size_t i = 0; i < results[a].pixels.size(); ++i)
-        largest = std::max(largest, relative_error(glm::vec3(results[a].pixels[i]), glm::vec3(results[b].pixels[i])));
+      float largest = 0.0f, difference = 0.0f, total = 0.0f;
+      for (std::size_t i = 0; i < results[a].pixels.size(); ++i) {
+        const glm::vec3 first(results[a].pixels[i]), second(results[b].pixels[i]);
+        largest = std::max(largest, relative_error(first, second));
+        difference += glm::length(first - second);
+        total += glm::length(second);
+      }
+      std::printf("indirect %s vs %s: mean |difference| %.1f %% of the mean, largest %.1f %%\n",
+                  render::indirect_operator_name(operators[a]), render::indirect_operator_name(operators[b]),
+                  100.0f * difference / std::max(total, 1e-6f), 100.0f * largest);
       EXPECT_GT(largest, 1e-2f) << render::indirect_operator_name(operators[a]) << " vs "
                                 << render::indirect_operator_name(operators[b]);
     }
