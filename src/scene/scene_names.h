@@ -30,6 +30,9 @@ inline constexpr Name<Upsampling> kUpsampling[] = {{"bilateral", Upsampling::bil
                                                    {"bilinear", Upsampling::bilinear}};
 inline constexpr Name<SplatMethod> kSplatMethod[] = {{"raster", SplatMethod::raster},
                                                      {"compute", SplatMethod::compute}};
+inline constexpr Name<ShadingMethod> kShadingMethod[] = {{"image", ShadingMethod::image_space},
+                                                         {"vertex", ShadingMethod::vertex},
+                                                         {"ao", ShadingMethod::ambient_occlusion}};
 inline constexpr Name<Tonemap> kTonemap[] = {
     {"aces", Tonemap::aces}, {"reinhard", Tonemap::reinhard}, {"clamp", Tonemap::clamp}};
 inline constexpr Name<OutputFormat> kOutputFormat[] = {

@@ -198,6 +198,7 @@ Camera read_camera(const json& value, const std::string& path) {
 RenderSettings read_render(const json& value, const std::string& path) {
   ObjectReader r(value, path);
   RenderSettings s;
+  s.method = r.enumeration("method", s.method, names::kShadingMethod);
   s.sh_order = r.integer("sh_order", s.sh_order);
   s.receiver_scale = r.integer("receiver_scale", s.receiver_scale);
   s.shadow_eta = r.number("shadow_eta", s.shadow_eta);

@@ -126,7 +126,8 @@ ojson camera_json(const Camera& camera) {
 }
 
 ojson render_json(const RenderSettings& r) {
-  return {{"sh_order", r.sh_order},
+  return {{"method", std::string(names::name_of(names::kShadingMethod, r.method))},
+          {"sh_order", r.sh_order},
           {"receiver_scale", r.receiver_scale},
           {"shadow_eta", number(r.shadow_eta)},
           {"indirect_eta", number(r.indirect_eta)},

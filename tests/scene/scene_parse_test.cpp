@@ -45,7 +45,7 @@ constexpr const char* kFullScene = R"({
   ],
   "camera": {"type": "fixed", "position": [0, 2, 6], "target": [0, 1, 0], "up": [0, 1, 0.1],
              "fov_degrees": 35, "near": 0.2, "far": 50},
-  "render": {"sh_order": 5, "receiver_scale": 2, "shadow_eta": 12, "indirect_eta": 8,
+  "render": {"method": "vertex", "sh_order": 5, "receiver_scale": 2, "shadow_eta": 12, "indirect_eta": 8,
              "indirect_operator": "exact", "exponential": "ol", "hyb_tau": 0.5,
              "upsampling": "bilinear", "splat": "compute", "indirect": false,
              "tonemap": "reinhard", "exposure_ev": -1.5},
@@ -139,6 +139,7 @@ TEST(SceneParse, EveryFieldOfTheFullScene) {
   EXPECT_FLOAT_EQ(r.hyb_tau, 0.5f);
   EXPECT_EQ(r.upsampling, Upsampling::bilinear);
   EXPECT_EQ(r.splat, SplatMethod::compute);
+  EXPECT_EQ(r.method, ShadingMethod::vertex);
   EXPECT_FALSE(r.indirect);
   EXPECT_EQ(r.tonemap, Tonemap::reinhard);
   EXPECT_FLOAT_EQ(r.exposure_ev, -1.5f);
@@ -160,6 +161,7 @@ TEST(SceneParse, MinimalSceneTakesEveryDefault) {
   EXPECT_EQ(parse_ok(R"({"schema_version": 1})"), expected);
   // The documented defaults.
   EXPECT_EQ(expected.render.sh_order, 4);
+  EXPECT_EQ(expected.render.method, ShadingMethod::image_space);
   EXPECT_EQ(expected.render.receiver_scale, 4);
   EXPECT_FLOAT_EQ(expected.render.shadow_eta, 15.0f);
   EXPECT_FLOAT_EQ(expected.render.indirect_eta, 10.0f);

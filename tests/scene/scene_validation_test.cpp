@@ -118,6 +118,7 @@ const Case kCases[] = {
     {R"({"render": {"indirect_operator": "fast"}})", "{}", "render.indirect_operator: unknown value \"fast\" (expected one of: point, averaged, exact)"},
     {R"({"render": {"exponential": "ps"}})", "{}", "render.exponential: unknown value \"ps\" (expected one of: hyb, ol)"},
     {R"({"render": {"upsampling": "nearest"}})", "{}", "render.upsampling: unknown value \"nearest\""},
+    {R"({"render": {"method": "pixel"}})", "{}", "render.method: unknown value \"pixel\" (expected one of: image, vertex, ao)"},
     {R"({"render": {"splat": "mesh"}})", "{}", "render.splat: unknown value \"mesh\""},
     {R"({"render": {"tonemap": "filmic"}})", "{}", "render.tonemap: unknown value \"filmic\" (expected one of: aces, reinhard, clamp)"},
     {R"({"render": {"indirect": 1}})", "{}", "render.indirect: expected true or false, got an integer"},
