@@ -1,6 +1,8 @@
 #version 460
 // G-buffer pass (frame step 2), fragment stage: world position + eye depth, unit normal facing
-// the viewer (surfaces are treated as double-sided), linear albedo.
+// the viewer (surfaces are treated as double-sided), linear albedo. With VERTEX_IRRADIANCE (the
+// vertex method) the second target holds the interpolated vertex irradiance E instead of the
+// normal (upsample_composite reads it there when counts.w == kCompositeDisplayIrradiance).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/layouts.h"
 
@@ -9,6 +11,9 @@ layout(push_constant) uniform Push { GbufferPush push; };
 
 layout(location = 0) in vec3 world_position;
 layout(location = 1) in vec3 world_normal;
+#ifdef VERTEX_IRRADIANCE
+layout(location = 2) in vec3 vertex_irradiance;
+#endif
 layout(location = 0) out vec4 out_position_depth;
 layout(location = 1) out vec4 out_normal;
 layout(location = 2) out vec4 out_albedo;
@@ -19,6 +24,10 @@ void main() {
   if (dot(normal, to_eye) < 0.0) normal = -normal;
   float eye_depth = dot(world_position - frame.eye_position.xyz, frame.eye_forward.xyz);
   out_position_depth = vec4(world_position, max(eye_depth, 1e-6));
+#ifdef VERTEX_IRRADIANCE
+  out_normal = vec4(max(vertex_irradiance, vec3(0.0)), 1.0);
+#else
   out_normal = vec4(normal, 1.0);
+#endif
   out_albedo = vec4(push.base_color.rgb, 1.0);
 }

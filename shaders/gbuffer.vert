@@ -1,6 +1,8 @@
 #version 460
 // G-buffer pass (frame step 2), vertex stage: pulls world-space positions and normals (the skin
-// pass output, or static meshes uploaded in world space) by gl_VertexIndex.
+// pass output, or static meshes uploaded in world space) by gl_VertexIndex. Compiled a second
+// time with VERTEX_IRRADIANCE for the vertex method: it also passes on the vertex's shaded
+// irradiance (E_direct + E_indirect of receiver receiver_offset + vertex) for interpolation.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/layouts.h"
 
@@ -11,10 +13,17 @@ layout(push_constant) uniform Push { GbufferPush push; };
 
 layout(location = 0) out vec3 world_position;
 layout(location = 1) out vec3 world_normal;
+#ifdef VERTEX_IRRADIANCE
+layout(std430, set = 0, binding = 3) readonly buffer Shaded { vec4 shaded[]; };
+layout(location = 2) out vec3 vertex_irradiance;
+#endif
 
 void main() {
   vec3 position = positions[gl_VertexIndex].xyz;
   world_position = position;
   world_normal = normals[gl_VertexIndex].xyz;
+#ifdef VERTEX_IRRADIANCE
+  vertex_irradiance = shaded[push.receiver_offset + uint(gl_VertexIndex)].rgb;
+#endif
   gl_Position = frame.view_projection * vec4(position, 1.0);
 }

@@ -6,6 +6,8 @@
 // bilinear; where every weight vanishes, the valid tap nearest in depth (written as an AOV).
 // Step 8: radiance = albedo/π · E on covered pixels, the environment along the view ray
 // elsewhere; HDR linear out and tonemapped sRGB 8-bit out (packed RGBA8).
+// Vertex method (counts.w == kCompositeDisplayIrradiance): step 7 is the rasterizer's
+// interpolation of the vertex irradiance, which the G-buffer's second target already holds.
 // CPU twins: render::upsample, render::tonemap and image::linear_to_srgb.
 #extension GL_GOOGLE_include_directive : require
 #include "frame_common.glsl"
@@ -95,7 +97,8 @@ void main() {
   vec4 position_depth = imageLoad(position_depth_image, ivec2(pixel));
   vec3 radiance;
   if (position_depth.w > 0.0) {
-    vec3 e = upsampled_irradiance(pixel, position_depth.w);
+    vec3 e = frame.counts.w == kCompositeDisplayIrradiance ? imageLoad(normal_image, ivec2(pixel)).rgb
+                                                           : upsampled_irradiance(pixel, position_depth.w);
     irradiance[index] = vec4(e, 1.0);
     radiance = imageLoad(albedo_image, ivec2(pixel)).rgb / kPi * e;
   } else {

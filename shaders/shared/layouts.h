@@ -69,7 +69,8 @@ struct FrameConstants {
   vec4 eye_position;          // xyz eye (m)
   vec4 eye_forward;           // xyz unit image-plane normal E: eye depth z = (p − e)·E
   uvec4 sizes;                // display width, height, receiver width, height
-  uvec4 counts;               // proxy count, receiver scale k, SH order, upsample mode (0 bilateral, 1 bilinear)
+  uvec4 counts;               // proxy count, receiver scale k, SH order, upsample mode (0 bilateral, 1 bilinear,
+                              // kCompositeDisplayIrradiance: the vertex method's G-buffer holds E already)
   vec4 shadow;                // η shadows, η indirect, HYB τ, log-table rows
   vec4 tables;                // OL max norm, OL rows, visibility-table rows, LH cube face size
   vec4 output_params;         // exposure multiplier, tonemap (0 aces, 1 reinhard, 2 clamp), bilateral ε (m), indirect on (1/0)
@@ -84,11 +85,24 @@ struct CompositePush {
   uint padding1;
 };
 
+// counts.w of the vertex method: upsample_composite reads display-resolution irradiance from the
+// G-buffer's second target (gbuffer.frag with VERTEX_IRRADIANCE writes it there, not the normal).
+PROXYGI_CONST(uint, kCompositeDisplayIrradiance, 2u);
+
 // Push constants of gbuffer.vert/frag: one draw per primitive.
 struct GbufferPush {
   vec4 base_color;  // linear rgba factor
-  uint vertex_offset_unused;
+  uint receiver_offset;  // vertex method: the receiver of this draw's vertex 0 (shaded[offset + i])
   uint flip_normals;  // 1: negative-determinant transform (not used by skinned meshes)
+  uint padding0;
+  uint padding1;
+};
+
+// Push constants of vertex_receivers.comp: one dispatch per draw, vertices become receivers
+// offset .. offset + vertex_count − 1.
+struct VertexReceiversPush {
+  uint vertex_count;
+  uint receiver_offset;
   uint padding0;
   uint padding1;
 };
@@ -107,6 +121,7 @@ static_assert(sizeof(GbufferPush) == 32);
 static_assert(sizeof(Receiver) == 32);
 static_assert(sizeof(CompositePush) == 16);
 static_assert(sizeof(SkinPush) == 32);
+static_assert(sizeof(VertexReceiversPush) == 16);
 }  // namespace proxygi::gpu_layout
 #endif
 

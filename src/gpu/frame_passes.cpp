@@ -35,8 +35,25 @@ const char* frame_pass_name(FramePass pass) {
   return "unknown";
 }
 
+std::span<const FramePass> frame_pass_order(ShadingMethod method) {
+  static constexpr FramePass kImageSpace[] = {FramePass::gbuffer, FramePass::receivers, FramePass::shadow,
+                                              FramePass::exponentiate, FramePass::indirect,
+                                              FramePass::upsample_composite};
+  // The G-buffer pass interpolates the vertex irradiance, so it follows the shading passes.
+  static constexpr FramePass kVertex[] = {FramePass::receivers, FramePass::shadow, FramePass::exponentiate,
+                                          FramePass::indirect, FramePass::gbuffer, FramePass::upsample_composite};
+  static constexpr FramePass kAmbientOcclusion[] = {FramePass::gbuffer, FramePass::receivers, FramePass::shadow,
+                                                    FramePass::upsample_composite};
+  switch (method) {
+    case ShadingMethod::vertex: return kVertex;
+    case ShadingMethod::ambient_occlusion: return kAmbientOcclusion;
+    case ShadingMethod::image_space: break;
+  }
+  return kImageSpace;
+}
+
 Result<FramePipelines> FramePipelines::create(const Context& context, int order,
-                                              render::IndirectOperator indirect_operator) {
+                                              render::IndirectOperator indirect_operator, ShadingMethod method) {
   if (order < 3 || order > 6) return make_error("frame: SH order " + std::to_string(order) + " is not in 3..6");
   const std::string suffix = ":order" + std::to_string(order);
   FramePipelines out;
@@ -53,6 +70,15 @@ Result<FramePipelines> FramePipelines::create(const Context& context, int order,
   auto made = Pipeline::graphics(context, gbuffer, gbuffer_bindings, sizeof(gpu_layout::GbufferPush));
   if (!made) return made.error();
   out.gbuffer = std::move(*made);
+  if (method == ShadingMethod::vertex) {
+    gbuffer.vertex_shader = "gbuffer.vert:vertex_irradiance";
+    gbuffer.fragment_shader = "gbuffer.frag:vertex_irradiance";
+    const Binding vertex_bindings[] = {gbuffer_bindings[0], gbuffer_bindings[1], gbuffer_bindings[2],
+                                       {3, kStorage, VK_SHADER_STAGE_VERTEX_BIT}};
+    auto vertex = Pipeline::graphics(context, gbuffer, vertex_bindings, sizeof(gpu_layout::GbufferPush));
+    if (!vertex) return make_error("gbuffer (vertex irradiance): " + vertex.message());
+    out.vertex_gbuffer = std::move(*vertex);
+  }
 
   struct ComputeSpec {
     Pipeline* target;
@@ -70,6 +96,18 @@ Result<FramePipelines> FramePipelines::create(const Context& context, int order,
        {kUniform, kImage, kImage, kStorage, kStorage, kStorage, kImage, kStorage, kStorage, kStorage},
        sizeof(gpu_layout::CompositePush)},
   };
+  std::vector<ComputeSpec> baselines;
+  if (method == ShadingMethod::vertex)
+    baselines.push_back({&out.vertex_receivers, "vertex_receivers.comp", {kStorage, kStorage, kStorage},
+                         sizeof(gpu_layout::VertexReceiversPush)});
+  if (method == ShadingMethod::ambient_occlusion)
+    baselines.push_back({&out.ambient_occlusion, "ambient_occlusion.comp" + suffix,
+                         {kUniform, kStorage, kUniform, kStorage, kStorage, kStorage, kStorage}, 0});
+  for (const auto& spec : baselines) {
+    auto pipeline = compute(context, spec.shader, spec.types, spec.push_bytes);
+    if (!pipeline) return make_error(spec.shader + ": " + pipeline.message());
+    *spec.target = std::move(*pipeline);
+  }
   for (const auto& spec : specs) {
     auto pipeline = compute(context, spec.shader, spec.types, spec.push_bytes);
     if (!pipeline) return make_error(spec.shader + ": " + pipeline.message());

@@ -10,8 +10,16 @@
 //                and the packed shaded buffer (E_direct + E_indirect, eye depth)
 //   upsample_composite  G-buffer, receiver normals, shaded, environment → display-resolution
 //                irradiance (AOV), HDR radiance and tonemapped sRGB (steps 7 and 8 fused)
+// The baselines (frame_settings.h ShadingMethod) reuse the passes under the same names:
+//   vertex       receivers = vertex_receivers.comp (mesh vertices → receivers), then shadow,
+//                exponentiate, indirect as above, then gbuffer with the vertex irradiance
+//                interpolated into its second target, then the composite
+//   ambient_occlusion  shadow = ambient_occlusion.comp (A and E per receiver); no exponentiate
+//                or indirect
 #include <array>
+#include <span>
 
+#include "gpu/frame_settings.h"
 #include "gpu/pipeline.h"
 #include "render/shading.h"
 
@@ -21,6 +29,8 @@ class Context;
 
 enum class FramePass { skin, gbuffer, receivers, shadow, exponentiate, indirect, upsample_composite, count };
 const char* frame_pass_name(FramePass pass);
+// The passes a method records, in order (skinning, run by the caller, excluded).
+std::span<const FramePass> frame_pass_order(ShadingMethod method);
 
 struct FramePipelines {
   Pipeline gbuffer;
@@ -29,11 +39,15 @@ struct FramePipelines {
   Pipeline exponentiate;
   Pipeline indirect;
   Pipeline upsample_composite;
+  Pipeline vertex_receivers;   // vertex method only
+  Pipeline vertex_gbuffer;     // vertex method only
+  Pipeline ambient_occlusion;  // AO method only
 
-  // Builds every pipeline for SH order 3..6 (the order-dependent shaders are embedded per order)
-  // and the indirect gather of one operator (embedded per operator).
+  // Builds the pipelines `method` uses for SH order 3..6 (the order-dependent shaders are
+  // embedded per order) with the indirect gather of one operator (embedded per operator).
   static Result<FramePipelines> create(const Context& context, int order,
-                                       render::IndirectOperator indirect_operator = render::IndirectOperator::averaged);
+                                       render::IndirectOperator indirect_operator = render::IndirectOperator::averaged,
+                                       ShadingMethod method = ShadingMethod::image_space);
 };
 
 inline constexpr VkFormat kGbufferFormat = VK_FORMAT_R32G32B32A32_SFLOAT;

@@ -1,12 +1,34 @@
 #pragma once
 // Settings of one soft-GI frame on the GPU (scene files map onto these; src/scene validates).
+#include <algorithm>
 #include <cstdint>
 
 #include "render/shading.h"
 
 namespace proxygi::gpu {
 
+// What the frame computes per receiver (scene render.method):
+//   image_space        the paper's method: receivers at 1/k of the display, SHEXP shadows and
+//                      indirect light, bilateral upsampling
+//   vertex             the prior-work baseline: the receivers are the mesh vertices (skinned
+//                      characters, the tessellated ground, static meshes), shaded by the same
+//                      passes and interpolated across triangles by the rasterizer
+//   ambient_occlusion  scalar AO from the same spheres at the image-space receivers:
+//                      E = Π_i (1 − a_i) · E(N), no bounce light (render::ambient_occlusion)
+enum class ShadingMethod { image_space, vertex, ambient_occlusion };
+
+// Vertex receivers are laid out in groups of kVertexReceiverGroup consecutive receivers (each
+// draw's first vertex starts a group), as a receiver "image" kVertexReceiverWidth wide: an 8×8
+// compute tile is one group of 64 consecutive vertices, so tiled culling bounds one mesh patch.
+inline constexpr std::uint32_t kVertexReceiverWidth = 8;
+inline constexpr std::uint32_t kVertexReceiverGroup = 64;
+inline constexpr std::uint32_t round_up_to_receiver_group(std::uint32_t vertices) {
+  return (vertices + kVertexReceiverGroup - 1) / kVertexReceiverGroup * kVertexReceiverGroup;
+}
+
 struct FrameSettings {
+  ShadingMethod method = ShadingMethod::image_space;
+  std::uint32_t vertex_receivers = 0; // vertex method: receiver capacity, Σ round_up_to_receiver_group(vertices of each draw)
   std::uint32_t width = 512;          // display resolution, pixels
   std::uint32_t height = 512;
   std::uint32_t receiver_scale = 4;   // k: receivers at 1/k resolution (1, 2, 4, 8)
@@ -20,8 +42,14 @@ struct FrameSettings {
   float exposure = 1.0f;              // multiplier before the tonemap (2^EV)
   std::uint32_t frames_in_flight = 2; // ring-buffer slots for per-frame uploads
 
-  std::uint32_t receiver_width() const { return (width + receiver_scale - 1) / receiver_scale; }
-  std::uint32_t receiver_height() const { return (height + receiver_scale - 1) / receiver_scale; }
+  // The receiver "image": display / k, or for the vertex method kVertexReceiverWidth × rows.
+  std::uint32_t receiver_width() const {
+    return method == ShadingMethod::vertex ? kVertexReceiverWidth : (width + receiver_scale - 1) / receiver_scale;
+  }
+  std::uint32_t receiver_height() const {
+    return method == ShadingMethod::vertex ? std::max(round_up_to_receiver_group(vertex_receivers), kVertexReceiverGroup) / kVertexReceiverWidth
+                                           : (height + receiver_scale - 1) / receiver_scale;
+  }
 };
 
 }  // namespace proxygi::gpu

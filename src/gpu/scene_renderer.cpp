@@ -12,6 +12,7 @@
 #include "proxies/rig_cache.h"
 #include "proxies/rig_file.h"
 #include "render/environment_lighting.h"
+#include "render/ground_grid.h"
 #include "scene/camera.h"
 #include "scene/character_motion.h"
 
@@ -110,6 +111,9 @@ render::FrameTableSettings table_settings(const scene::RenderSettings& render) {
 
 FrameSettings frame_settings(const scene::Scene& scene) {
   FrameSettings settings;
+  settings.method = scene.render.method == scene::ShadingMethod::vertex              ? ShadingMethod::vertex
+                    : scene.render.method == scene::ShadingMethod::ambient_occlusion ? ShadingMethod::ambient_occlusion
+                                                                                      : ShadingMethod::image_space;
   settings.width = std::uint32_t(scene.output.width);
   settings.height = std::uint32_t(scene.output.height);
   settings.receiver_scale = std::uint32_t(scene.render.receiver_scale);
@@ -152,7 +156,7 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Context& context, c
   std::unique_ptr<SceneRenderer> renderer(new SceneRenderer(context));
   renderer->scene_ = scene;
   warn_unsupported(scene.render);
-  const FrameSettings settings = frame_settings(scene);
+  FrameSettings settings = frame_settings(scene);
   const std::uint32_t slots = std::max(settings.frames_in_flight, 1u);
 
   auto skin_pass = SkinPass::create(context);
@@ -235,7 +239,18 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Context& context, c
     renderer->instances_.push_back(std::move(instance));
   }
 
-  if (scene.ground.enabled) {
+  if (scene.ground.enabled && settings.method == ShadingMethod::vertex) {
+    // Vertex receivers need ground vertices where the characters are (render/ground_grid.h).
+    const render::GroundRegion region = render::ground_fine_region(scene);
+    const render::GroundGrid grid =
+        render::make_ground_grid(scene.ground.size, region.min, region.max, region.vertices_per_metre);
+    log_info("vertex method: ground grid of " + std::to_string(grid.positions.size()) + " vertices (" +
+             std::to_string(region.vertices_per_metre) + " per metre near the characters)");
+    auto ground = upload_static_mesh(context, grid.positions, grid.normals, grid.indices,
+                                     glm::vec4(scene.ground.albedo, 1.0f));
+    if (!ground) return ground.error();
+    renderer->static_meshes_.push_back(std::move(*ground));
+  } else if (scene.ground.enabled) {
     const float half = 0.5f * scene.ground.size;
     const glm::vec3 corners[] = {{-half, 0, -half}, {half, 0, -half}, {half, 0, half}, {-half, 0, half}};
     const glm::vec3 up[] = {{0, 1, 0}, {0, 1, 0}, {0, 1, 0}, {0, 1, 0}};
@@ -262,6 +277,21 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Context& context, c
     }
   }
 
+  if (settings.method == ShadingMethod::vertex) {
+    // Every vertex of every draw is a receiver, each draw starting a group (frame_settings.h).
+    std::uint64_t receivers = 0;
+    for (const auto& instance : renderer->instances_)
+      for (const auto& mesh : instance->meshes)
+        for (const auto& primitive : mesh.primitives) receivers += round_up_to_receiver_group(primitive.vertex_count);
+    for (const auto& mesh : renderer->static_meshes_) receivers += round_up_to_receiver_group(mesh.draw().vertex_count());
+    // Receivers × n² floats of log occlusion must fit one storage buffer binding.
+    const std::uint64_t limit = context.report().max_storage_buffer_range / (sizeof(float) * std::uint64_t(scene.render.sh_order) * std::uint64_t(scene.render.sh_order));
+    if (receivers > limit)
+      return make_error("render.method vertex: " + std::to_string(receivers) + " vertex receivers, at most " +
+                        std::to_string(limit) + " fit this device's storage buffers at order " +
+                        std::to_string(scene.render.sh_order));
+    settings.vertex_receivers = std::uint32_t(receivers);
+  }
   auto lighting = render::make_environment_lighting(scene, scene.render.sh_order);
   if (!lighting) return lighting.error();
   const render::FrameTables tables = render::make_frame_tables(lighting->lighting, table_settings(scene.render));
@@ -375,8 +405,7 @@ Result<PassTimings> SceneRenderer::time_passes(int frame) {
   auto skin = timed([&](VkCommandBuffer commands) { record_skinning(commands, 0); });
   if (!skin) return skin.error();
   timings.milliseconds[std::size_t(FramePass::skin)] = *skin;
-  for (FramePass pass : {FramePass::gbuffer, FramePass::receivers, FramePass::shadow, FramePass::exponentiate,
-                         FramePass::indirect, FramePass::upsample_composite}) {
+  for (FramePass pass : frame_pass_order(frame_->settings().method)) {
     auto ms = timed([&](VkCommandBuffer commands) { frame_->record_pass(commands, 0, pass, *draws); });
     if (!ms) return ms.error();
     timings.milliseconds[std::size_t(pass)] = *ms;

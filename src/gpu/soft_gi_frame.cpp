@@ -10,7 +10,8 @@
 namespace proxygi::gpu {
 namespace {
 
-constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+constexpr VkBufferUsageFlags kStorage =
+    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
 
 template <class T>
 std::span<const std::uint8_t> bytes_of(std::span<const T> values) {
@@ -63,7 +64,7 @@ Result<std::unique_ptr<SoftGiFrame>> SoftGiFrame::create(Context& context, const
   std::unique_ptr<SoftGiFrame> frame(new SoftGiFrame(context));
   frame->settings_ = settings;
   frame->order_ = tables.settings.order;
-  auto pipelines = FramePipelines::create(context, frame->order_, settings.indirect_operator);
+  auto pipelines = FramePipelines::create(context, frame->order_, settings.indirect_operator, settings.method);
   if (!pipelines) return pipelines.error();
   frame->pipelines_ = std::move(*pipelines);
 
@@ -171,8 +172,9 @@ Status SoftGiFrame::write_slot(std::uint32_t slot, const FrameView& view, std::s
   constants.eye_forward = glm::vec4(glm::normalize(view.forward), 0.0f);
   constants.sizes =
       glm::uvec4(settings_.width, settings_.height, settings_.receiver_width(), settings_.receiver_height());
-  constants.counts = glm::uvec4(std::uint32_t(spheres.size()), settings_.receiver_scale, std::uint32_t(order_),
-                                std::uint32_t(settings_.upsample));
+  const std::uint32_t composite = settings_.method == ShadingMethod::vertex ? gpu_layout::kCompositeDisplayIrradiance
+                                                                             : std::uint32_t(settings_.upsample);
+  constants.counts = glm::uvec4(std::uint32_t(spheres.size()), settings_.receiver_scale, std::uint32_t(order_), composite);
   const float tau = settings_.optimal_linear_only ? std::numeric_limits<float>::max() : settings_.hybrid_tau;
   constants.shadow = glm::vec4(eta_shadow_, eta_indirect_, tau, log_table_rows_);
   constants.tables = glm::vec4(optimal_linear_max_, optimal_linear_rows_, visibility_rows_, cube_size_);
@@ -235,16 +237,23 @@ void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot, Fram
       const VkRect2D scissor{{0, 0}, {width, height}};
       vkCmdSetViewport(commands, 0, 1, &viewport);
       vkCmdSetScissor(commands, 0, 1, &scissor);
-      pipelines_.gbuffer.bind(commands);
+      // The vertex method's variant also interpolates each vertex's shaded irradiance.
+      const bool vertex = settings_.method == ShadingMethod::vertex;
+      const Pipeline& pipeline = vertex ? pipelines_.vertex_gbuffer : pipelines_.gbuffer;
+      pipeline.bind(commands);
+      std::uint32_t receiver_offset = 0;
       for (const DrawItem& draw : draws) {
-        DescriptorPush()
-            .uniform_buffer(0, current.constants)
-            .storage_buffer(1, *draw.positions)
-            .storage_buffer(2, *draw.normals)
-            .push(context_, commands, pipelines_.gbuffer);
+        const std::uint32_t first = receiver_offset;
+        receiver_offset += round_up_to_receiver_group(draw.vertex_count());
+        if (vertex && receiver_offset > settings_.vertex_receivers) break;  // beyond the capacity: not shaded
+        DescriptorPush descriptors;
+        descriptors.uniform_buffer(0, current.constants).storage_buffer(1, *draw.positions).storage_buffer(2, *draw.normals);
+        if (vertex) descriptors.storage_buffer(3, shaded_);
+        descriptors.push(context_, commands, pipeline);
         gpu_layout::GbufferPush push{};
         push.base_color = draw.base_color;
-        pipelines_.gbuffer.push_constants(commands, &push, sizeof(push));
+        push.receiver_offset = first;
+        pipeline.push_constants(commands, &push, sizeof(push));
         vkCmdBindIndexBuffer(commands, draw.indices->handle(), 0, VK_INDEX_TYPE_UINT32);
         vkCmdDrawIndexed(commands, draw.index_count, 1, 0, 0, 0);
       }
@@ -255,6 +264,10 @@ void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot, Fram
       break;
     }
     case FramePass::receivers: {
+      if (settings_.method == ShadingMethod::vertex) {
+        record_vertex_receivers(commands, draws);
+        break;
+      }
       context_.begin_label(commands, frame_pass_name(FramePass::receivers));
       pipelines_.receivers.bind(commands);
       DescriptorPush()
@@ -269,6 +282,10 @@ void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot, Fram
       break;
     }
     case FramePass::shadow: {
+      if (settings_.method == ShadingMethod::ambient_occlusion) {
+        record_ambient_occlusion(commands, current);
+        break;
+      }
       context_.begin_label(commands, frame_pass_name(FramePass::shadow));
       pipelines_.shadow.bind(commands);
       DescriptorPush()
@@ -347,9 +364,7 @@ void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot, Fram
 
 void SoftGiFrame::record(VkCommandBuffer commands, std::uint32_t slot, std::span<const DrawItem> draws) const {
   memory_barrier(commands);  // the previous frame on the queue may still read these targets
-  for (FramePass pass : {FramePass::gbuffer, FramePass::receivers, FramePass::shadow, FramePass::exponentiate,
-                         FramePass::indirect, FramePass::upsample_composite})
-    record_pass(commands, slot, pass, draws);
+  for (FramePass pass : frame_pass_order(settings_.method)) record_pass(commands, slot, pass, draws);
   const Slot& current = slots_[slot];
   const VkBufferCopy ldr_copy{0, 0, ldr_.size()}, hdr_copy{0, 0, hdr_.size()};
   vkCmdCopyBuffer(commands, ldr_.handle(), current.ldr_readback.handle(), 1, &ldr_copy);

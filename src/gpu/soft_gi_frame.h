@@ -44,7 +44,12 @@ struct DrawItem {
   const Buffer* indices = nullptr;
   std::uint32_t index_count = 0;
   glm::vec4 base_color{1.0f};  // linear albedo
+  std::uint32_t vertex_count() const { return positions ? std::uint32_t(positions->size() / sizeof(glm::vec4)) : 0; }
 };
+
+// The vertex method's receiver capacity for these draws: each draw's vertices start a new group
+// (FrameSettings::vertex_receivers must be at least this).
+std::uint32_t vertex_receiver_count(std::span<const DrawItem> draws);
 
 // A static world-space mesh uploaded once (ground, static meshes).
 struct StaticMesh {
@@ -88,6 +93,9 @@ class SoftGiFrame {
   image::ImageF slot_hdr(std::uint32_t slot) const;
 
   // Readback of the last recorded frame's intermediate results (after its submit completed).
+  // "Receiver res" is the receiver image of FrameSettings::receiver_width/height: for the vertex
+  // method, receiver i is vertex i of the draws in order (groups of 64 per draw, the rest empty),
+  // and the G-buffer's normal target holds the interpolated vertex irradiance instead.
   Result<std::vector<std::uint8_t>> read_ldr() const;   // RGBA8 sRGB, width × height
   Result<image::ImageF> read_hdr() const;                // linear radiance
   Result<image::ImageF> read_irradiance() const;         // display res, upsampled E
@@ -107,6 +115,8 @@ class SoftGiFrame {
   Result<image::ImageF> read_vec4_buffer(const Buffer& buffer, std::uint32_t width, std::uint32_t height) const;
   Result<image::ImageF> read_gbuffer_image(const Image& image) const;
   Result<image::ImageF> read_receiver_field(bool normals) const;
+  // The baselines' passes (src/gpu/baseline_passes.cpp).
+  void record_vertex_receivers(VkCommandBuffer commands, std::span<const DrawItem> draws) const;
 
   struct Slot {
     Buffer constants;     // FrameConstants, host-visible uniform
@@ -114,6 +124,8 @@ class SoftGiFrame {
     Buffer ldr_readback;  // host-visible copies of the slot's finished frame
     Buffer hdr_readback;
   };
+
+  void record_ambient_occlusion(VkCommandBuffer commands, const Slot& slot) const;
 
   Context& context_;
   FrameSettings settings_;
