@@ -1,7 +1,9 @@
 // proxygi bench frame [--json] [--indirect-operator point|averaged|exact]: milliseconds per pass
 // and per frame, proxies, fps and the shadow accumulation's effective pixel-proxy pairs per
-// second, for the default scene at 512×512 with receivers at 1/1, 1/2, 1/4, 1/8 and the built-in
-// crowd of 20 characters at 1/4, in one run, with the chosen indirect operator (default averaged).
+// second, for the default scene at 512×512 with receivers at 1/1, 1/2, 1/4, 1/8, the two
+// baselines of the speed–accuracy chart on the default scene (vertex-based accumulation; scalar
+// AO at 1/4) and the built-in crowd of 20 characters at 1/4, in one run, with the chosen indirect
+// operator (default averaged).
 // Whole frames are timed pipelined (two frames in flight, as `record` runs); passes are timed one
 // fenced submit each with the CPU clock (lavapipe's timestamps are unreliable).
 #include <sys/resource.h>
@@ -35,6 +37,8 @@ scene::IndirectOperator indirect_operator(const std::string& name) {
 
 struct ConfigResult {
   std::string name;
+  std::string method;  // render.method: image, vertex, ao
+  std::size_t receivers = 0;
   int receiver_scale = 0;
   std::size_t characters = 0;
   double frame_ms = 0.0;  // pipelined wall time per frame
@@ -51,7 +55,12 @@ Result<ConfigResult> run_config(gpu::Context& context, const std::string& name, 
   if (!renderer) return renderer.error();
   ConfigResult result;
   result.name = name;
+  result.method = std::string(scene::names::name_of(scene::names::kShadingMethod, scene.render.method));
   result.receiver_scale = scale;
+  const gpu::FrameSettings& settings = (*renderer)->frame().settings();
+  result.receivers = settings.method == gpu::ShadingMethod::vertex
+                         ? settings.vertex_receivers
+                         : std::size_t(settings.receiver_width()) * settings.receiver_height();
   result.characters = scene.characters.size();
   const int first = scene.output.first_frame;
   for (int warm = 0; warm < 2; ++warm)
@@ -77,7 +86,7 @@ Result<ConfigResult> run_config(gpu::Context& context, const std::string& name, 
     result.passes.cpu_prepare_ms += timings->cpu_prepare_ms / options.frames;
     result.passes.proxies = timings->proxies;
   }
-  const double receivers = double((options.size + scale - 1) / scale) * double((options.size + scale - 1) / scale);
+  const double receivers = double(result.receivers);
   const double shadow_ms = result.passes.milliseconds[std::size_t(gpu::FramePass::shadow)];
   result.pairs_per_second = shadow_ms > 0.0 ? receivers * double(result.passes.proxies) / (shadow_ms * 1e-3) : 0.0;
   return result;
@@ -90,6 +99,13 @@ int run_bench_frame(const BenchOptions& options) {
   for (int scale : {1, 2, 4, 8}) {
     auto result = run_config(**context, "default", scene::default_scene(), scale, options);
     if (!result) return fail_runtime("bench frame: default scene, 1/" + std::to_string(scale) + ": " + result.message());
+    results.push_back(*result);
+  }
+  for (auto method : {scene::ShadingMethod::vertex, scene::ShadingMethod::ambient_occlusion}) {
+    scene::Scene baseline = scene::default_scene();
+    baseline.render.method = method;
+    auto result = run_config(**context, "default", baseline, 4, options);
+    if (!result) return fail_runtime("bench frame: default scene, baseline: " + result.message());
     results.push_back(*result);
   }
   auto crowd = run_config(**context, "crowd", scene::crowd_scene(), 4, options);
@@ -113,6 +129,8 @@ int run_bench_frame(const BenchOptions& options) {
     out["speedup_quarter_over_full"] = k1 / k4;
     for (const auto& result : results) {
       nlohmann::json entry = {{"scene", result.name},
+                              {"method", result.method},
+                              {"receivers", result.receivers},
                               {"receiver_scale", result.receiver_scale},
                               {"characters", result.characters},
                               {"proxies", result.passes.proxies},
@@ -129,13 +147,15 @@ int run_bench_frame(const BenchOptions& options) {
   }
   std::printf("device: %s (%s), %dx%d, %d frames per setting, %s indirect operator\n", report.name.c_str(),
               report.driver.c_str(), options.size, options.size, options.frames, options.indirect_operator.c_str());
-  std::printf("%-8s %3s %5s %7s %9s %6s |", "scene", "k", "chars", "proxies", "frame ms", "fps");
+  std::printf("%-8s %-6s %3s %9s %5s %7s %9s %6s |", "scene", "method", "k", "receivers", "chars", "proxies",
+              "frame ms", "fps");
   for (std::size_t p = 0; p < std::size_t(gpu::FramePass::count); ++p)
     std::printf(" %9.9s", gpu::frame_pass_name(gpu::FramePass(p)));
   std::printf(" | %s\n", "shadow Mpairs/s");
   for (const auto& result : results) {
-    std::printf("%-8s 1/%d %5zu %7zu %9.2f %6.1f |", result.name.c_str(), result.receiver_scale, result.characters,
-                result.passes.proxies, result.frame_ms, 1000.0 / result.frame_ms);
+    const std::string k = result.method == "vertex" ? "-" : "1/" + std::to_string(result.receiver_scale);
+    std::printf("%-8s %-6s %3s %9zu %5zu %7zu %9.2f %6.1f |", result.name.c_str(), result.method.c_str(), k.c_str(),
+                result.receivers, result.characters, result.passes.proxies, result.frame_ms, 1000.0 / result.frame_ms);
     for (double ms : result.passes.milliseconds) std::printf(" %9.2f", ms);
     std::printf(" | %.0f\n", result.pairs_per_second / 1e6);
   }
