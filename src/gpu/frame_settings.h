@@ -28,7 +28,8 @@ inline constexpr std::uint32_t round_up_to_receiver_group(std::uint32_t vertices
 
 struct FrameSettings {
   ShadingMethod method = ShadingMethod::image_space;
-  std::uint32_t vertex_receivers = 0; // vertex method: receiver capacity, Σ round_up_to_receiver_group(vertices of each draw)
+  // Vertex method: receiver capacity, Σ round_up_to_receiver_group(vertex count) over the draws.
+  std::uint32_t vertex_receivers = 0;
   std::uint32_t width = 512;          // display resolution, pixels
   std::uint32_t height = 512;
   std::uint32_t receiver_scale = 4;   // k: receivers at 1/k resolution (1, 2, 4, 8)
@@ -47,8 +48,9 @@ struct FrameSettings {
     return method == ShadingMethod::vertex ? kVertexReceiverWidth : (width + receiver_scale - 1) / receiver_scale;
   }
   std::uint32_t receiver_height() const {
-    return method == ShadingMethod::vertex ? std::max(round_up_to_receiver_group(vertex_receivers), kVertexReceiverGroup) / kVertexReceiverWidth
-                                           : (height + receiver_scale - 1) / receiver_scale;
+    if (method == ShadingMethod::vertex)
+      return std::max(round_up_to_receiver_group(vertex_receivers), kVertexReceiverGroup) / kVertexReceiverWidth;
+    return (height + receiver_scale - 1) / receiver_scale;
   }
 };
 

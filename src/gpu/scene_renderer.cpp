@@ -283,9 +283,11 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Context& context, c
     for (const auto& instance : renderer->instances_)
       for (const auto& mesh : instance->meshes)
         for (const auto& primitive : mesh.primitives) receivers += round_up_to_receiver_group(primitive.vertex_count);
-    for (const auto& mesh : renderer->static_meshes_) receivers += round_up_to_receiver_group(mesh.draw().vertex_count());
+    for (const auto& mesh : renderer->static_meshes_)
+      receivers += round_up_to_receiver_group(mesh.draw().vertex_count());
     // Receivers × n² floats of log occlusion must fit one storage buffer binding.
-    const std::uint64_t limit = context.report().max_storage_buffer_range / (sizeof(float) * std::uint64_t(scene.render.sh_order) * std::uint64_t(scene.render.sh_order));
+    const std::uint64_t order = std::uint64_t(scene.render.sh_order);
+    const std::uint64_t limit = context.report().max_storage_buffer_range / (sizeof(float) * order * order);
     if (receivers > limit)
       return make_error("render.method vertex: " + std::to_string(receivers) + " vertex receivers, at most " +
                         std::to_string(limit) + " fit this device's storage buffers at order " +

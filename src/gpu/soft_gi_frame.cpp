@@ -174,7 +174,8 @@ Status SoftGiFrame::write_slot(std::uint32_t slot, const FrameView& view, std::s
       glm::uvec4(settings_.width, settings_.height, settings_.receiver_width(), settings_.receiver_height());
   const std::uint32_t composite = settings_.method == ShadingMethod::vertex ? gpu_layout::kCompositeDisplayIrradiance
                                                                              : std::uint32_t(settings_.upsample);
-  constants.counts = glm::uvec4(std::uint32_t(spheres.size()), settings_.receiver_scale, std::uint32_t(order_), composite);
+  constants.counts =
+      glm::uvec4(std::uint32_t(spheres.size()), settings_.receiver_scale, std::uint32_t(order_), composite);
   const float tau = settings_.optimal_linear_only ? std::numeric_limits<float>::max() : settings_.hybrid_tau;
   constants.shadow = glm::vec4(eta_shadow_, eta_indirect_, tau, log_table_rows_);
   constants.tables = glm::vec4(optimal_linear_max_, optimal_linear_rows_, visibility_rows_, cube_size_);
@@ -247,7 +248,9 @@ void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot, Fram
         receiver_offset += round_up_to_receiver_group(draw.vertex_count());
         if (vertex && receiver_offset > settings_.vertex_receivers) break;  // beyond the capacity: not shaded
         DescriptorPush descriptors;
-        descriptors.uniform_buffer(0, current.constants).storage_buffer(1, *draw.positions).storage_buffer(2, *draw.normals);
+        descriptors.uniform_buffer(0, current.constants)
+            .storage_buffer(1, *draw.positions)
+            .storage_buffer(2, *draw.normals);
         if (vertex) descriptors.storage_buffer(3, shaded_);
         descriptors.push(context_, commands, pipeline);
         gpu_layout::GbufferPush push{};

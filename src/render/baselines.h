@@ -42,8 +42,8 @@ glm::vec3 interpolate_triangle(const glm::vec3& x, const glm::vec3& a, const glm
 glm::vec3 unshadowed_irradiance(const FrameTables& tables, const glm::vec3& normal);
 
 struct AmbientOcclusionResult {
-  float unoccluded = 1.0f;      // A ∈ [0, 1]
-  glm::vec3 irradiance{0.0f};   // E = A · E(N), rgb
+  float unoccluded = 1.0f;     // A ∈ [0, 1]
+  glm::vec3 irradiance{0.0f};  // E = A · E(N), rgb
 };
 AmbientOcclusionResult ambient_occlusion(const FrameTables& tables, const glm::vec3& p, const glm::vec3& normal,
                                          std::span<const Sphere> spheres);

@@ -57,7 +57,8 @@ GroundRegion ground_fine_region(const scene::Scene& scene) {
   glm::vec2 low(1e30f), high(-1e30f);
   for (const auto& character : scene.characters)
     for (int frame = 0; frame < scene.output.frame_count; ++frame) {
-      const glm::vec3 root = scene::character_root_position(character, scene::frame_time_s(scene.output, scene.output.first_frame + frame));
+      const glm::vec3 root = scene::character_root_position(
+          character, scene::frame_time_s(scene.output, scene.output.first_frame + frame));
       low = glm::min(low, glm::vec2(root.x, root.z));
       high = glm::max(high, glm::vec2(root.x, root.z));
     }

@@ -24,14 +24,14 @@
 namespace proxygi::render {
 
 inline constexpr float kGroundVerticesPerMetre = 16.0f;
-inline constexpr float kGroundMargin = 2.5f;        // m around the characters' roots: body and shadow reach
-inline constexpr int kGroundMaxFineLines = 1024;    // per axis; the density drops to fit
+inline constexpr float kGroundMargin = 2.5f;      // m around the characters' roots: body and shadow reach
+inline constexpr int kGroundMaxFineLines = 1024;  // per axis; the density drops to fit
 
 struct GroundGrid {
-  std::vector<glm::vec3> positions;   // y = 0
-  std::vector<glm::vec3> normals;     // +Y
-  std::vector<std::uint32_t> indices; // triangles, counter-clockwise seen from +Y
-  int lines_x = 0, lines_z = 0;       // grid lines per axis (vertices = lines_x · lines_z)
+  std::vector<glm::vec3> positions;    // y = 0
+  std::vector<glm::vec3> normals;      // +Y
+  std::vector<std::uint32_t> indices;  // triangles, counter-clockwise seen from +Y
+  int lines_x = 0, lines_z = 0;        // grid lines per axis (vertices = lines_x · lines_z)
 };
 
 // A square ground of side `size` (m) with fine lines over [fine_min, fine_max] (x, z; clipped to
@@ -40,7 +40,7 @@ struct GroundGrid {
 GroundGrid make_ground_grid(float size, glm::vec2 fine_min, glm::vec2 fine_max, float vertices_per_metre);
 
 struct GroundRegion {
-  glm::vec2 min{0.0f}, max{0.0f};     // x, z (m)
+  glm::vec2 min{0.0f}, max{0.0f};  // x, z (m)
   float vertices_per_metre = kGroundVerticesPerMetre;
 };
 // The fine region for a scene (see above); the density is lowered when the region would need

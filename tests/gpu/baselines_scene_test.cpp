@@ -13,7 +13,8 @@ namespace {
 
 using BaselineSceneTest = testing::GpuTest;
 
-Result<FinishedFrame> render_default(Context& context, scene::ShadingMethod method, std::unique_ptr<SceneRenderer>& out) {
+Result<FinishedFrame> render_default(Context& context, scene::ShadingMethod method,
+                                     std::unique_ptr<SceneRenderer>& out) {
   scene::Scene scene = scene::default_scene();
   scene.output.width = scene.output.height = 256;
   scene.render.method = method;

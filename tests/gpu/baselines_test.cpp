@@ -29,7 +29,8 @@ Rendered render_frame(Context& context, ShadingMethod method, std::uint32_t size
   render::FrameTableSettings table_settings;
   table_settings.order = order;
   out.tables = render::make_frame_tables(testing::constant_sky_sh(order, 1.0), table_settings);
-  auto mesh = upload_static_mesh(context, ground.positions, ground.normals, ground.indices, glm::vec4(0.8f, 0.8f, 0.8f, 1));
+  auto mesh =
+      upload_static_mesh(context, ground.positions, ground.normals, ground.indices, glm::vec4(0.8f, 0.8f, 0.8f, 1));
   EXPECT_TRUE(mesh.ok());
   if (!mesh.ok()) return out;
   const DrawItem draws[] = {mesh->draw()};
@@ -199,7 +200,8 @@ TEST_F(BaselineTest, VertexReceiversShadingAndInterpolationMatchCpuTwins) {
     const auto cpu_direct = render::exponentiate_and_shade(rendered.tables, cpu_log, 0.25f, n);
     EXPECT_LE(relative_error(glm::vec3(direct->pixels[i]), cpu_direct.irradiance), 1e-3f) << "direct at vertex " << i;
     const auto cpu_indirect = render::accumulate_indirect(rendered.tables, p, n, kTwoSpheres, direct->pixels[i].w);
-    EXPECT_LE(relative_error(glm::vec3(indirect->pixels[i]), cpu_indirect.irradiance), 1e-3f) << "indirect at vertex " << i;
+    EXPECT_LE(relative_error(glm::vec3(indirect->pixels[i]), cpu_indirect.irradiance), 1e-3f)
+        << "indirect at vertex " << i;
     if (norm > 1e-4f) ++shadowed;
     if (cpu_indirect.irradiance.r > 1e-3f) ++lit_by_bounce;
   }
@@ -229,12 +231,14 @@ TEST_F(BaselineTest, VertexReceiversShadingAndInterpolationMatchCpuTwins) {
       auto vertex = [&](std::size_t i, std::size_t j) { return vertex_at.at({xs[i], zs[j]}); };
       const std::size_t corner = vertex(column, row), next_x = vertex(column + 1, row);
       const std::size_t next_z = vertex(column, row + 1), far = vertex(column + 1, row + 1);
-      const bool first = (p.x - xs[column]) / (xs[column + 1] - xs[column]) + (p.z - zs[row]) / (zs[row + 1] - zs[row]) <= 1.0f;
+      const bool first =
+          (p.x - xs[column]) / (xs[column + 1] - xs[column]) + (p.z - zs[row]) / (zs[row + 1] - zs[row]) <= 1.0f;
       const std::size_t a = first ? corner : far, b = next_z, c = next_x;
-      const glm::vec3 expected =
-          render::interpolate_triangle(glm::vec3(p), ground.positions[a], ground.positions[b], ground.positions[c],
-                                       glm::vec3(shaded->pixels[a]), glm::vec3(shaded->pixels[b]), glm::vec3(shaded->pixels[c]));
-      EXPECT_LE(relative_error(glm::vec3(irradiance->at(x, y)), expected), 1e-3f) << "interpolated E at " << x << "," << y;
+      const glm::vec3 expected = render::interpolate_triangle(
+          glm::vec3(p), ground.positions[a], ground.positions[b], ground.positions[c], glm::vec3(shaded->pixels[a]),
+          glm::vec3(shaded->pixels[b]), glm::vec3(shaded->pixels[c]));
+      EXPECT_LE(relative_error(glm::vec3(irradiance->at(x, y)), expected), 1e-3f)
+          << "interpolated E at " << x << "," << y;
       const glm::vec3 radiance = glm::vec3(albedo->at(x, y)) / kPi * glm::vec3(irradiance->at(x, y));
       EXPECT_LE(relative_error(glm::vec3(hdr->at(x, y)), radiance), 1e-3f) << "composite at " << x << "," << y;
       ++checked;
@@ -282,8 +286,8 @@ TEST_F(BaselineTest, VertexMethodApproachesImageSpaceOnADenseGrid) {
 }
 
 TEST_F(BaselineTest, OutputsAreFiniteAndNonNegative) {
-  const std::vector<render::Sphere> spheres = {{{0.0f, 0.2f, 0.0f}, 0.5f, {1.0f, 1.0f, 1.0f}},   // straddles the plane
-                                               {{0.1f, 0.3f, 0.1f}, 0.4f, {1.0f, 0.0f, 0.0f}},   // heavy overlap
+  const std::vector<render::Sphere> spheres = {{{0.0f, 0.2f, 0.0f}, 0.5f, {1.0f, 1.0f, 1.0f}},  // straddles the plane
+                                               {{0.1f, 0.3f, 0.1f}, 0.4f, {1.0f, 0.0f, 0.0f}},  // heavy overlap
                                                {{-0.5f, 0.05f, 0.3f}, 0.2f, {0.0f, 1.0f, 0.0f}}};
   for (ShadingMethod method : {ShadingMethod::vertex, ShadingMethod::ambient_occlusion}) {
     auto rendered = render_frame(context(), method, 48, 4, grid(2.0f, 8.0f), spheres, 6);
