@@ -43,11 +43,29 @@ struct Image {
   std::vector<std::uint8_t> rgba;  // width * height * 4 bytes
 };
 
+// glTF sampler of a texture. glTF leaves absent filters to the implementation; proxygi takes
+// LINEAR magnification and LINEAR_MIPMAP_LINEAR minification then. Wrap defaults to REPEAT.
+enum class TextureWrap { repeat, clamp_to_edge, mirrored_repeat };
+enum class TextureFilter { nearest, linear };
+struct TextureSampler {
+  TextureFilter magnification = TextureFilter::linear;
+  TextureFilter minification = TextureFilter::linear;
+  bool mipmaps = true;                           // false: minFilter NEAREST or LINEAR (level 0 only)
+  TextureFilter mipmap = TextureFilter::linear;  // between levels (…_MIPMAP_NEAREST / _LINEAR)
+  TextureWrap wrap_s = TextureWrap::repeat;      // along u
+  TextureWrap wrap_t = TextureWrap::repeat;      // along v
+};
+
 struct Material {
   std::string name;
   glm::vec4 base_color_factor{1.0f};  // linear RGBA
   int base_color_image = -1;          // index into Character::images, -1 if untextured
-  int base_color_texcoord = 0;        // which TEXCOORD_n the texture reads (only 0 is imported)
+  int base_color_texcoord = 0;        // which TEXCOORD_n the texture reads (only 0 is imported;
+                                      // KHR_texture_transform's texCoord overrides it)
+  TextureSampler base_color_sampler;
+  // KHR_texture_transform of the base color texture: uv' = (M * vec3(uv, 1)).xy with
+  // M = translation(offset) * rotation(counter-clockwise) * scale; identity when absent.
+  glm::mat3 base_color_uv_transform{1.0f};
   bool double_sided = false;
 };
 
