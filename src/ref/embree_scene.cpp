@@ -9,13 +9,10 @@
 
 #include <embree3/rtcore.h>
 
+#include "render/texture_sampling.h"
+
 namespace proxygi::ref {
 namespace {
-
-int wrap_index(int i, int n) {
-  const int r = i % n;
-  return r < 0 ? r + n : r;
-}
 
 std::string device_error_text(RTCDevice device) {
   switch (rtcGetDeviceError(device)) {
@@ -47,21 +44,14 @@ Status validate_mesh(const TriangleMesh& mesh, std::size_t index) {
 }
 
 glm::vec3 material_albedo(const SurfaceMaterial& material, const glm::vec2& uv) {
-  return material.texture ? material.albedo * material.texture->sample(uv) : material.albedo;
+  if (!material.texture) return material.albedo;
+  return material.albedo * material.texture->sample(render::transform_uv(material.uv_transform, uv), material.sampler);
 }
 
 }  // namespace
 
-glm::vec3 LinearTexture::sample(const glm::vec2& uv) const {
-  if (width <= 0 || height <= 0) return glm::vec3(1.0f);
-  // Texel centers at (i + 0.5) / width, as GPU samplers.
-  const float x = uv.x * float(width) - 0.5f, y = uv.y * float(height) - 0.5f;
-  const float fx = std::floor(x), fy = std::floor(y);
-  const float tx = x - fx, ty = y - fy;
-  const int x0 = wrap_index(int(fx), width), x1 = wrap_index(int(fx) + 1, width);
-  const int y0 = wrap_index(int(fy), height), y1 = wrap_index(int(fy) + 1, height);
-  auto at = [&](int i, int j) { return texels[std::size_t(j) * std::size_t(width) + std::size_t(i)]; };
-  return glm::mix(glm::mix(at(x0, y0), at(x1, y0), tx), glm::mix(at(x0, y1), at(x1, y1), tx), ty);
+glm::vec3 LinearTexture::sample(const glm::vec2& uv, const anim::TextureSampler& sampler) const {
+  return render::sample_texels(texels, width, height, uv, sampler.wrap_s, sampler.wrap_t, sampler.magnification);
 }
 
 Result<EmbreeScene> EmbreeScene::build(std::vector<TriangleMesh> meshes, std::span<const SphereShape> spheres) {

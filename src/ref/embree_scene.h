@@ -5,7 +5,10 @@
 //
 // Conventions: world space (glTF: right-handed, +Y up, meters). Every surface is double-sided:
 // hits report normals turned toward the incoming ray. Albedo is linear RGB in [0, 1]:
-// material albedo × texture texel (bilinear, repeat wrap, texels already decoded sRGB → linear).
+// material albedo × texture texel (render/texture_sampling.h: level 0 of the glTF sampler's
+// wrap and magnification filter at the KHR_texture_transform'ed uv, texels already decoded
+// sRGB → linear). No mip levels: the pixel's many path samples average the texture over its
+// footprint, which the GPU's trilinear mipmapping approximates.
 // The scene is immutable after build() and safe to query from many threads at once.
 #include <cstdint>
 #include <memory>
@@ -16,6 +19,7 @@
 
 #include <glm/glm.hpp>
 
+#include "anim/character.h"
 #include "base/result.h"
 
 // Embree's opaque handles, declared here so users need not include <embree3/rtcore.h>.
@@ -29,13 +33,15 @@ struct LinearTexture {
   int width = 0;
   int height = 0;
   std::vector<glm::vec3> texels;
-  // Bilinear lookup with repeat wrap at texture coordinate uv.
-  glm::vec3 sample(const glm::vec2& uv) const;
+  // Level-0 lookup at texture coordinate uv with the sampler's wrap and magnification filter.
+  glm::vec3 sample(const glm::vec2& uv, const anim::TextureSampler& sampler = {}) const;
 };
 
 struct SurfaceMaterial {
   glm::vec3 albedo{0.8f};                        // linear RGB (glTF base color factor)
   std::shared_ptr<const LinearTexture> texture;  // multiplies albedo at the hit's uv; may be null
+  anim::TextureSampler sampler;                  // the texture's glTF sampler
+  glm::mat3 uv_transform{1.0f};                  // KHR_texture_transform (anim::Material)
 };
 
 // A world-space triangle mesh. normals and uvs are per vertex or empty.

@@ -9,6 +9,7 @@
 #include "anim/mannequin.h"
 #include "anim/posed_character.h"
 #include "image/image.h"
+#include "render/texture_sampling.h"
 #include "scene/character_motion.h"
 
 namespace proxygi::ref {
@@ -56,8 +57,15 @@ SurfaceMaterial material_of(const LoadedModel& model, int material_index) {
   if (material_index < 0 || std::size_t(material_index) >= model.character.materials.size()) return out;
   const anim::Material& material = model.character.materials[std::size_t(material_index)];
   out.albedo = glm::vec3(material.base_color_factor);
-  if (material.base_color_image >= 0 && std::size_t(material.base_color_image) < model.textures.size())
-    out.texture = model.textures[std::size_t(material.base_color_image)];
+  const int image = material.base_color_image;
+  if (image < 0 || std::size_t(image) >= model.textures.size()) return out;
+  if (material.base_color_texcoord != 0) {  // only TEXCOORD_0 is imported: the GPU's fallback too
+    out.albedo *= render::mean_linear_color(model.character.images[std::size_t(image)]);
+    return out;
+  }
+  out.texture = model.textures[std::size_t(image)];
+  out.sampler = material.base_color_sampler;
+  out.uv_transform = material.base_color_uv_transform;
   return out;
 }
 
