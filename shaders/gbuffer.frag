@@ -1,12 +1,15 @@
 #version 460
 // G-buffer pass (frame step 2), fragment stage: world position + eye depth, unit normal facing
-// the viewer (surfaces are treated as double-sided), linear albedo. With VERTEX_IRRADIANCE (the
-// vertex method) the second target holds the interpolated vertex irradiance E instead of the
-// normal (upsample_composite reads it there when counts.w == kCompositeDisplayIrradiance).
+// the viewer (surfaces are treated as double-sided), linear albedo = base color factor × base
+// color texture (an sRGB image, decoded to linear by the sampler before filtering; a 1×1 white
+// image for untextured materials; CPU twin: render/texture_sampling.h). With VERTEX_IRRADIANCE
+// (the vertex method) the second target holds the interpolated vertex irradiance E instead of
+// the normal (upsample_composite reads it there when counts.w == kCompositeDisplayIrradiance).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/layouts.h"
 
 layout(std140, set = 0, binding = 0) uniform Frame { FrameConstants frame; };
+layout(set = 0, binding = 5) uniform sampler2D base_color_texture;
 layout(push_constant) uniform Push { GbufferPush push; };
 
 layout(location = 0) in vec3 world_position;
@@ -14,6 +17,7 @@ layout(location = 1) in vec3 world_normal;
 #ifdef VERTEX_IRRADIANCE
 layout(location = 2) in vec3 vertex_irradiance;
 #endif
+layout(location = 3) in vec2 texture_coordinate;
 layout(location = 0) out vec4 out_position_depth;
 layout(location = 1) out vec4 out_normal;
 layout(location = 2) out vec4 out_albedo;
@@ -29,5 +33,5 @@ void main() {
 #else
   out_normal = vec4(normal, 1.0);
 #endif
-  out_albedo = vec4(push.base_color.rgb, 1.0);
+  out_albedo = vec4(push.base_color.rgb * texture(base_color_texture, texture_coordinate).rgb, 1.0);
 }

@@ -90,12 +90,16 @@ struct CompositePush {
 PROXYGI_CONST(uint, kCompositeDisplayIrradiance, 2u);
 
 // Push constants of gbuffer.vert/frag: one draw per primitive.
+// Albedo = base_color.rgb × texture(binding 5) at uv' = (u·xyz, v·xyz) of (uv, 1): the rows of
+// the material's KHR_texture_transform matrix (gpu/material_textures.h).
 struct GbufferPush {
-  vec4 base_color;  // linear rgba factor
+  vec4 base_color;       // linear rgba factor
+  vec4 uv_transform_u;   // u' = dot(uv_transform_u.xyz, vec3(uv, 1))
+  vec4 uv_transform_v;   // v' = dot(uv_transform_v.xyz, vec3(uv, 1))
+  uint has_uvs;          // 0: no TEXCOORD_0, uv = (0, 0) and binding 4 is not read
   uint receiver_offset;  // vertex method: the receiver of this draw's vertex 0 (shaded[offset + i])
   uint flip_normals;  // 1: negative-determinant transform (not used by skinned meshes)
   uint padding0;
-  uint padding1;
 };
 
 // Push constants of vertex_receivers.comp: one dispatch per draw, vertices become receivers
@@ -117,7 +121,7 @@ struct Receiver {
 static_assert(sizeof(TestPatternPush) == 16);
 static_assert(sizeof(ProxySphere) == 32);
 static_assert(sizeof(FrameConstants) == 128 + 16 * 7 + 16 * 27);
-static_assert(sizeof(GbufferPush) == 32);
+static_assert(sizeof(GbufferPush) == 64);
 static_assert(sizeof(Receiver) == 32);
 static_assert(sizeof(CompositePush) == 16);
 static_assert(sizeof(SkinPush) == 32);

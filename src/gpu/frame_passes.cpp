@@ -66,7 +66,9 @@ Result<FramePipelines> FramePipelines::create(const Context& context, int order,
   gbuffer.depth_test = gbuffer.depth_write = true;
   const Binding gbuffer_bindings[] = {{0, kUniform, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
                                       {1, kStorage, VK_SHADER_STAGE_VERTEX_BIT},
-                                      {2, kStorage, VK_SHADER_STAGE_VERTEX_BIT}};
+                                      {2, kStorage, VK_SHADER_STAGE_VERTEX_BIT},
+                                      {4, kStorage, VK_SHADER_STAGE_VERTEX_BIT},  // uvs
+                                      {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT}};
   auto made = Pipeline::graphics(context, gbuffer, gbuffer_bindings, sizeof(gpu_layout::GbufferPush));
   if (!made) return made.error();
   out.gbuffer = std::move(*made);
@@ -74,7 +76,7 @@ Result<FramePipelines> FramePipelines::create(const Context& context, int order,
     gbuffer.vertex_shader = "gbuffer.vert:vertex_irradiance";
     gbuffer.fragment_shader = "gbuffer.frag:vertex_irradiance";
     const Binding vertex_bindings[] = {gbuffer_bindings[0], gbuffer_bindings[1], gbuffer_bindings[2],
-                                       {3, kStorage, VK_SHADER_STAGE_VERTEX_BIT}};
+                                       gbuffer_bindings[3], gbuffer_bindings[4], {3, kStorage, VK_SHADER_STAGE_VERTEX_BIT}};
     auto vertex = Pipeline::graphics(context, gbuffer, vertex_bindings, sizeof(gpu_layout::GbufferPush));
     if (!vertex) return make_error("gbuffer (vertex irradiance): " + vertex.message());
     out.vertex_gbuffer = std::move(*vertex);

@@ -1,7 +1,8 @@
 #pragma once
 // The pipelines of the soft-GI frame, one per pass, each named after its shader (debug labels and
 // timing use the names). Inputs and outputs of each pass are the bindings listed in its shader:
-//   gbuffer      frame constants, positions, normals     → position+depth, normal, albedo, depth
+//   gbuffer      frame constants, positions, normals, uvs, base color texture
+//                                                        → position+depth, normal, albedo, depth
 //   receivers    position+depth, normal images           → receivers (1/k)
 //   shadow       receivers, proxies, log-occlusion table → log-occlusion SH per receiver
 //   exponentiate receivers, log SH, OL table, LH cubes   → direct E and (O_p)_0 per receiver

@@ -83,18 +83,20 @@ VkImageAspectFlags Image::aspect() const {
 }
 
 Result<Image> Image::create(const Context& context, std::uint32_t width, std::uint32_t height, VkFormat format,
-                            VkImageUsageFlags usage) {
+                            VkImageUsageFlags usage, std::uint32_t mip_levels) {
   if (width == 0 || height == 0) return make_error("gpu image: size must be > 0");
+  if (mip_levels == 0) return make_error("gpu image: needs at least one mip level");
   Image image;
   image.device_ = context.device();
   image.format_ = format;
   image.width_ = width;
   image.height_ = height;
+  image.mip_levels_ = mip_levels;
   VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
   info.imageType = VK_IMAGE_TYPE_2D;
   info.format = format;
   info.extent = {width, height, 1};
-  info.mipLevels = 1;
+  info.mipLevels = mip_levels;
   info.arrayLayers = 1;
   info.samples = VK_SAMPLE_COUNT_1_BIT;
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
@@ -114,7 +116,7 @@ Result<Image> Image::create(const Context& context, std::uint32_t width, std::ui
   view.image = image.image_;
   view.viewType = VK_IMAGE_VIEW_TYPE_2D;
   view.format = format;
-  view.subresourceRange = {image.aspect(), 0, 1, 0, 1};
+  view.subresourceRange = {image.aspect(), 0, mip_levels, 0, 1};
   PROXYGI_VK_TRY(vkCreateImageView(image.device_, &view, nullptr, &image.view_));
   return image;
 }
@@ -142,6 +144,7 @@ Image& Image::operator=(Image&& other) noexcept {
     format_ = other.format_;
     width_ = other.width_;
     height_ = other.height_;
+    mip_levels_ = other.mip_levels_;
   }
   return *this;
 }

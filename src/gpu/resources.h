@@ -44,11 +44,11 @@ class Buffer {
   void* mapped_ = nullptr;
 };
 
-// A 2-D, single-mip, single-layer image in optimal tiling with one view covering it.
+// A 2-D, single-layer image in optimal tiling with one view covering all its mip levels.
 class Image {
  public:
   static Result<Image> create(const Context& context, std::uint32_t width, std::uint32_t height, VkFormat format,
-                              VkImageUsageFlags usage);
+                              VkImageUsageFlags usage, std::uint32_t mip_levels = 1);
   Image() = default;
   ~Image();
   Image(Image&& other) noexcept;
@@ -61,6 +61,7 @@ class Image {
   VkFormat format() const { return format_; }
   std::uint32_t width() const { return width_; }
   std::uint32_t height() const { return height_; }
+  std::uint32_t mip_levels() const { return mip_levels_; }
   VkImageAspectFlags aspect() const;
 
  private:
@@ -72,6 +73,7 @@ class Image {
   VkFormat format_ = VK_FORMAT_UNDEFINED;
   std::uint32_t width_ = 0;
   std::uint32_t height_ = 0;
+  std::uint32_t mip_levels_ = 1;
 };
 
 // Bytes per texel of the formats proxygi reads back.

@@ -23,6 +23,7 @@ struct SceneRenderer::Model {
   std::filesystem::path file;
   anim::Character character;
   proxies::TrackingRig tracking;
+  MaterialTextures textures;
 };
 
 // One mesh node of one instance: its primitives skinned by the node's skin, or (no skin) by a
@@ -33,7 +34,8 @@ struct MeshDraw {
   std::vector<SkinnedPrimitive> primitives;
   std::vector<Buffer> indices;
   std::vector<std::uint32_t> index_counts;
-  std::vector<glm::vec4> colors;
+  std::vector<Buffer> uvs;  // static TEXCOORD_0 per primitive; no handle when absent
+  std::vector<MaterialBinding> materials;
   std::vector<Buffer> palettes;         // skin matrices, one buffer per ring slot, host-visible
   std::vector<Buffer> normal_palettes;  // their inverse-transposes (anim::normal_matrix layout)
   std::size_t morph_offset = 0;         // the node's slice of PoseBuffers::morph_weights
@@ -50,22 +52,6 @@ struct SceneRenderer::Instance {
 };
 
 namespace {
-
-glm::vec4 material_color(const anim::Character& character, int material) {
-  if (material < 0 || std::size_t(material) >= character.materials.size()) return glm::vec4(1.0f);
-  const anim::Material& m = character.materials[std::size_t(material)];
-  glm::vec4 color = m.base_color_factor;
-  // The G-buffer has no UVs: a textured material shows its texture's mean (linear) color.
-  if (m.base_color_image >= 0 && std::size_t(m.base_color_image) < character.images.size()) {
-    const anim::Image& image = character.images[std::size_t(m.base_color_image)];
-    glm::dvec3 sum(0.0);
-    const std::size_t texels = std::size_t(image.width) * std::size_t(image.height);
-    for (std::size_t i = 0; i < texels; ++i)
-      for (int c = 0; c < 3; ++c) sum[c] += image::srgb_to_linear(image.rgba[i * 4 + std::size_t(c)] / 255.0f);
-    if (texels > 0) color *= glm::vec4(glm::vec3(sum / double(texels)), 1.0f);
-  }
-  return color;
-}
 
 Result<anim::Character> load_model(const std::filesystem::path& file) {
   auto character = anim::import_gltf(file);
@@ -182,6 +168,9 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Context& context, c
       auto tracking = proxies::compile_tracking(*rig, owned->character, rig->binding);
       if (!tracking) return make_error(rig_file.string() + ": " + tracking.message());
       owned->tracking = std::move(*tracking);
+      auto textures = MaterialTextures::create(context, owned->character);
+      if (!textures) return make_error("characters[" + std::to_string(index) + "]: " + textures.message());
+      owned->textures = std::move(*textures);
       model = owned.get();
       by_file[file] = model;
       renderer->models_.push_back(std::move(owned));
@@ -217,7 +206,14 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Context& context, c
         draw.primitives.push_back(std::move(*uploaded));
         draw.indices.push_back(std::move(*indices));
         draw.index_counts.push_back(std::uint32_t(primitive.indices.size()));
-        draw.colors.push_back(material_color(character, primitive.material));
+        draw.uvs.emplace_back();
+        if (!primitive.uvs.empty()) {
+          auto uvs = create_buffer_with_data(context, as_bytes(std::span<const glm::vec2>(primitive.uvs)),
+                                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+          if (!uvs) return uvs.error();
+          draw.uvs.back() = std::move(*uvs);
+        }
+        draw.materials.push_back(model->textures.binding(primitive.material));
       }
       for (std::uint32_t slot = 0; slot < slots; ++slot)
         for (auto* palettes : {&draw.palettes, &draw.normal_palettes}) {
@@ -268,10 +264,16 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Context& context, c
       return posed.error();
     auto primitives = anim::pose_meshes(*loaded, pose);
     if (!primitives) return primitives.error();
+    auto textures = MaterialTextures::create(context, *loaded);
+    if (!textures) return make_error("static_meshes[" + std::to_string(index) + "]: " + textures.message());
+    renderer->static_textures_.push_back(std::make_unique<MaterialTextures>(std::move(*textures)));
     for (const auto& primitive : *primitives) {
       if (primitive.normals.size() != primitive.positions.size()) continue;
-      const glm::vec4 color = entry.albedo ? glm::vec4(*entry.albedo, 1.0f) : material_color(*loaded, primitive.material);
-      auto mesh = upload_static_mesh(context, primitive.positions, primitive.normals, primitive.indices, color);
+      // The albedo override replaces the whole base color, texture included (as in the reference).
+      const MaterialBinding material = entry.albedo ? MaterialBinding{glm::vec4(*entry.albedo, 1.0f), {}}
+                                                    : renderer->static_textures_.back()->binding(primitive.material);
+      auto mesh = upload_static_mesh(context, primitive.positions, primitive.normals, primitive.indices,
+                                     material.base_color, primitive.uvs, material.texture);
       if (!mesh) return mesh.error();
       renderer->static_meshes_.push_back(std::move(*mesh));
     }
@@ -339,7 +341,8 @@ Result<std::vector<DrawItem>> SceneRenderer::prepare_frame(int frame, std::uint3
                     std::size_t(mesh.morph_weights[slot].size()));
       for (std::size_t i = 0; i < mesh.primitives.size(); ++i)
         draws.push_back({&mesh.primitives[i].world_positions, &mesh.primitives[i].world_normals, &mesh.indices[i],
-                         mesh.index_counts[i], mesh.colors[i]});
+                         mesh.index_counts[i], mesh.materials[i].base_color,
+                         mesh.uvs[i].handle() != VK_NULL_HANDLE ? &mesh.uvs[i] : nullptr, mesh.materials[i].texture});
     }
     proxies::TrackProxiesJob track{&instance->model->tracking, instance->pose.world, instance->spheres};
     if (Status tracked = track.run(); !tracked) return tracked.error();

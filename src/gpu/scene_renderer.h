@@ -17,6 +17,7 @@
 
 #include "base/result.h"
 #include "gpu/context.h"
+#include "gpu/material_textures.h"
 #include "gpu/skin_pass.h"
 #include "gpu/soft_gi_frame.h"
 #include "proxies/tracking.h"
@@ -86,6 +87,7 @@ class SceneRenderer {
   std::vector<std::unique_ptr<Model>> models_;
   std::vector<std::unique_ptr<Instance>> instances_;
   std::vector<StaticMesh> static_meshes_;
+  std::vector<std::unique_ptr<MaterialTextures>> static_textures_;  // the textures static_meshes_ bind
   std::unique_ptr<SoftGiFrame> frame_;
   std::unique_ptr<SkinPass> skin_pass_;
   std::vector<Context::InFlight> in_flight_;

@@ -33,10 +33,17 @@ std::vector<glm::vec4> to_vec4(std::span<const glm::vec3> values, float w) {
 
 Result<StaticMesh> upload_static_mesh(Context& context, std::span<const glm::vec3> positions,
                                       std::span<const glm::vec3> normals, std::span<const std::uint32_t> indices,
-                                      const glm::vec4& base_color) {
+                                      const glm::vec4& base_color, std::span<const glm::vec2> uvs,
+                                      const BaseColorTexture& texture) {
   if (positions.empty() || indices.empty() || normals.size() != positions.size())
     return make_error("static mesh: needs positions, one normal per position and indices");
+  if (!uvs.empty() && uvs.size() != positions.size()) return make_error("static mesh: uv count differs from positions");
   StaticMesh mesh;
+  if (!uvs.empty()) {
+    auto uploaded = create_buffer_with_data(context, bytes_of(uvs), kStorage);
+    if (!uploaded) return uploaded.error();
+    mesh.uvs = std::move(*uploaded);
+  }
   const auto positions4 = to_vec4(positions, 1.0f);
   const auto normals4 = to_vec4(normals, 0.0f);
   auto p = create_buffer_with_data(context, bytes_of(std::span<const glm::vec4>(positions4)), kStorage);
@@ -50,6 +57,7 @@ Result<StaticMesh> upload_static_mesh(Context& context, std::span<const glm::vec
   mesh.indices = std::move(*i);
   mesh.index_count = static_cast<std::uint32_t>(indices.size());
   mesh.base_color = base_color;
+  mesh.texture = texture;
   return mesh;
 }
 
@@ -67,6 +75,9 @@ Result<std::unique_ptr<SoftGiFrame>> SoftGiFrame::create(Context& context, const
   auto pipelines = FramePipelines::create(context, frame->order_, settings.indirect_operator, settings.method);
   if (!pipelines) return pipelines.error();
   frame->pipelines_ = std::move(*pipelines);
+  auto white = WhiteTexture::create(context);
+  if (!white) return white.error();
+  frame->white_ = std::move(*white);
 
   const VkImageUsageFlags target_usage =
       VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
@@ -247,15 +258,23 @@ void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot, Fram
         const std::uint32_t first = receiver_offset;
         receiver_offset += round_up_to_receiver_group(draw.vertex_count());
         if (vertex && receiver_offset > settings_.vertex_receivers) break;  // beyond the capacity: not shaded
+        const bool textured = draw.texture.view != VK_NULL_HANDLE && draw.texture.sampler != VK_NULL_HANDLE;
         DescriptorPush descriptors;
         descriptors.uniform_buffer(0, current.constants)
             .storage_buffer(1, *draw.positions)
-            .storage_buffer(2, *draw.normals);
+            .storage_buffer(2, *draw.normals)
+            .storage_buffer(4, draw.uvs ? *draw.uvs : *draw.positions)  // not read without uvs
+            .sampled_image(5, textured ? draw.texture.view : white_.image.view(),
+                           textured ? draw.texture.sampler : white_.sampler.handle());
         if (vertex) descriptors.storage_buffer(3, shaded_);
         descriptors.push(context_, commands, pipeline);
         gpu_layout::GbufferPush push{};
         push.base_color = draw.base_color;
         push.receiver_offset = first;
+        const glm::mat3& m = draw.texture.uv_transform;  // column-major: m[column][row]
+        push.uv_transform_u = glm::vec4(m[0][0], m[1][0], m[2][0], 0.0f);
+        push.uv_transform_v = glm::vec4(m[0][1], m[1][1], m[2][1], 0.0f);
+        push.has_uvs = draw.uvs ? 1u : 0u;
         pipeline.push_constants(commands, &push, sizeof(push));
         vkCmdBindIndexBuffer(commands, draw.indices->handle(), 0, VK_INDEX_TYPE_UINT32);
         vkCmdDrawIndexed(commands, draw.index_count, 1, 0, 0, 0);

@@ -19,6 +19,7 @@
 #include "base/result.h"
 #include "gpu/frame_passes.h"
 #include "gpu/frame_settings.h"
+#include "gpu/material_textures.h"
 #include "gpu/resources.h"
 #include "image/image.h"
 #include "render/frame_tables.h"
@@ -37,13 +38,16 @@ struct FrameView {
   glm::vec3 forward{0.0f, 0.0f, -1.0f};  // unit image-plane normal
 };
 
-// One mesh draw of the G-buffer pass: world-space vec4 positions and normals, 32-bit indices.
+// One mesh draw of the G-buffer pass: world-space vec4 positions and normals, 32-bit indices;
+// albedo = base_color × texture (gpu/material_textures.h) at the vertices' uvs.
 struct DrawItem {
   const Buffer* positions = nullptr;
   const Buffer* normals = nullptr;
   const Buffer* indices = nullptr;
   std::uint32_t index_count = 0;
-  glm::vec4 base_color{1.0f};  // linear albedo
+  glm::vec4 base_color{1.0f};   // linear albedo factor
+  const Buffer* uvs = nullptr;  // vec2 TEXCOORD_0 per vertex; null: uv (0, 0)
+  BaseColorTexture texture;     // null view: white
   std::uint32_t vertex_count() const { return positions ? std::uint32_t(positions->size() / sizeof(glm::vec4)) : 0; }
 };
 
@@ -56,13 +60,20 @@ struct StaticMesh {
   Buffer positions;  // vec4
   Buffer normals;    // vec4
   Buffer indices;    // uint32
+  Buffer uvs;        // vec2; no handle when the mesh has none
   std::uint32_t index_count = 0;
   glm::vec4 base_color{1.0f};
-  DrawItem draw() const { return {&positions, &normals, &indices, index_count, base_color}; }
+  BaseColorTexture texture;
+  DrawItem draw() const {
+    return {&positions, &normals, &indices, index_count, base_color, uvs.handle() != VK_NULL_HANDLE ? &uvs : nullptr,
+            texture};
+  }
 };
+// uvs: empty or one per position. The texture's image and sampler must outlive the mesh's draws.
 Result<StaticMesh> upload_static_mesh(Context& context, std::span<const glm::vec3> positions,
                                       std::span<const glm::vec3> normals, std::span<const std::uint32_t> indices,
-                                      const glm::vec4& base_color);
+                                      const glm::vec4& base_color, std::span<const glm::vec2> uvs = {},
+                                      const BaseColorTexture& texture = {});
 
 class SoftGiFrame {
  public:
@@ -131,6 +142,7 @@ class SoftGiFrame {
   FrameSettings settings_;
   int order_ = 4;
   FramePipelines pipelines_;
+  WhiteTexture white_;  // bound by untextured draws
   Image position_depth_, normal_, albedo_, depth_;
   Buffer receivers_, log_occlusion_, direct_, indirect_, shaded_, irradiance_, hdr_, ldr_;
   Buffer log_table_, visibility_table_, optimal_linear_, lighting_cube_, environment_;

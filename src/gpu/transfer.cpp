@@ -29,7 +29,7 @@ void transition(VkCommandBuffer commands, const Image& image, VkImageLayout from
   barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.image = image.handle();
-  barrier.subresourceRange = {image.aspect(), 0, 1, 0, 1};
+  barrier.subresourceRange = {image.aspect(), 0, image.mip_levels(), 0, 1};
   VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
   dependency.imageMemoryBarrierCount = 1;
   dependency.pImageMemoryBarriers = &barrier;
