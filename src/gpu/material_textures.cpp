@@ -53,6 +53,7 @@ Result<Sampler> Sampler::create(const Context& context, const anim::TextureSampl
   if (description.mipmaps) {
     info.mipmapMode = description.mipmap == anim::TextureFilter::nearest ? VK_SAMPLER_MIPMAP_MODE_NEAREST
                                                                          : VK_SAMPLER_MIPMAP_MODE_LINEAR;
+    info.mipLodBias = kTextureLodBias;  // not without mipmaps: it would move the mag/min switch
     info.maxLod = VK_LOD_CLAMP_NONE;
   } else {
     // Level 0 only, but λ may still exceed 0 so minification keeps its own filter (maxLod 0

@@ -2,8 +2,9 @@
 // Base color textures of the G-buffer pass. Each image a character's materials use is uploaded
 // once as a VK_FORMAT_R8G8B8A8_SRGB sampled image with a full mip chain, made on the CPU in
 // linear space (srgb_mip_chain); each material's glTF sampler becomes a VkSampler (wrap and
-// filters as glTF says; no anisotropy). Untextured draws bind a 1×1 white image, so one
-// pipeline serves both. Albedo = base color factor × texture(uv_transform × TEXCOORD_0).
+// filters as glTF says, LOD bias kTextureLodBias when mipmapped, no anisotropy). Untextured draws bind a 1×1
+// white image, so one pipeline serves both. Albedo = base color factor × texture(uv_transform ×
+// TEXCOORD_0).
 //
 // Not supported: texCoord sets other than 0 (the material shows its texture's mean linear
 // color, as the reference path tracer does), per-texture anisotropy.
@@ -20,6 +21,16 @@
 namespace proxygi::gpu {
 
 class Context;
+
+// Mip LOD bias of every mipmapped texture sampler. The reference path tracer's pixel value averages its
+// jittered rays over the pixel: a box one footprint wide. Trilinear filtering at the standard
+// LOD is a bilinear tent (two texels of a level whose texels are one footprint) over the mip
+// chain's box: √3 times the box's standard deviation, so textures come out blurrier than the
+// reference's; the bias log2(1/√3) ≈ −0.8 matches the spread, −1 makes the tent span one
+// footprint. Measured on CesiumMan at 256² against 8×8 rays per pixel (tests/gpu/
+// texture_shared_assets_test.cpp): mean |albedo difference| 0.043 at bias 0, 0.017 at −0.8,
+// 0.016 at −1, 0.018 at −1.5; 0.034 for level-0 lookups at pixel centers.
+inline constexpr float kTextureLodBias = -1.0f;
 
 // The texture half of one draw: a null view or sampler means the frame's white texture.
 struct BaseColorTexture {
