@@ -26,6 +26,12 @@ inline constexpr std::uint32_t round_up_to_receiver_group(std::uint32_t vertices
   return (vertices + kVertexReceiverGroup - 1) / kVertexReceiverGroup * kVertexReceiverGroup;
 }
 
+// How frame step 4 accumulates the proxies' log-occlusion vectors (same result either way):
+// the tiled compute gather (shadow_gather.comp) or the paper's raster splat (ShadowSplatPass).
+// The raster splat needs receivers on the image grid: ShadingMethod::image_space only (the vertex
+// method always gathers; ambient_occlusion has no log-occlusion step).
+enum class SplatMethod { compute, raster };
+
 struct FrameSettings {
   ShadingMethod method = ShadingMethod::image_space;
   // Vertex method: receiver capacity, Σ round_up_to_receiver_group(vertex count) over the draws.
@@ -37,6 +43,7 @@ struct FrameSettings {
   bool optimal_linear_only = false;   // OL instead of HYB: no squarings (HYB with τ = ∞)
   render::UpsampleMode upsample = render::UpsampleMode::bilateral;
   float bilateral_depth_epsilon = 0.05f;  // ε of eq. 11, meters of eye depth
+  SplatMethod splat = SplatMethod::compute;  // the faster on lavapipe (README, `proxygi bench frame`)
   bool indirect = true;
   render::IndirectOperator indirect_operator = render::IndirectOperator::averaged;  // its own pipeline variant
   render::Tonemap tonemap = render::Tonemap::aces;

@@ -111,16 +111,12 @@ FrameSettings frame_settings(const scene::Scene& scene) {
   settings.indirect_operator = scene.render.indirect_operator == scene::IndirectOperator::point   ? render::IndirectOperator::point
                                : scene.render.indirect_operator == scene::IndirectOperator::exact ? render::IndirectOperator::exact
                                                                                                   : render::IndirectOperator::averaged;
+  settings.splat = scene.render.splat == scene::SplatMethod::raster ? SplatMethod::raster : SplatMethod::compute;
   settings.tonemap = scene.render.tonemap == scene::Tonemap::reinhard ? render::Tonemap::reinhard
                      : scene.render.tonemap == scene::Tonemap::clamp  ? render::Tonemap::clamp
                                                                       : render::Tonemap::aces;
   settings.exposure = std::exp2(scene.render.exposure_ev);
   return settings;
-}
-
-void warn_unsupported(const scene::RenderSettings& render) {
-  if (render.splat != scene::SplatMethod::compute)
-    log_warning("render.splat: only the 'compute' gather runs on the GPU; using it");
 }
 
 }  // namespace
@@ -141,8 +137,9 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Context& context, c
                                                              const SceneRendererOptions& options) {
   std::unique_ptr<SceneRenderer> renderer(new SceneRenderer(context));
   renderer->scene_ = scene;
-  warn_unsupported(scene.render);
   FrameSettings settings = frame_settings(scene);
+  if (settings.splat == SplatMethod::raster && settings.method != ShadingMethod::image_space)
+    log_warning("render.splat: 'raster' splats onto image-space receivers only; this method does not use it");
   const std::uint32_t slots = std::max(settings.frames_in_flight, 1u);
 
   auto skin_pass = SkinPass::create(context);

@@ -78,6 +78,12 @@ Result<std::unique_ptr<SoftGiFrame>> SoftGiFrame::create(Context& context, const
   auto white = WhiteTexture::create(context);
   if (!white) return white.error();
   frame->white_ = std::move(*white);
+  if (settings.splat == SplatMethod::raster && settings.method == ShadingMethod::image_space) {
+    auto splat = ShadowSplatPass::create(context, frame->order_, settings.width, settings.height,
+                                         settings.receiver_scale);
+    if (!splat) return splat.error();
+    frame->shadow_splat_ = std::move(*splat);
+  }
 
   const VkImageUsageFlags target_usage =
       VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
@@ -198,6 +204,7 @@ Status SoftGiFrame::write_slot(std::uint32_t slot, const FrameView& view, std::s
           glm::vec4(irradiance_order3_[std::size_t(channel)][std::size_t(i)], 0, 0, 0);
   std::memcpy(slots_[slot].constants.mapped(), &constants, sizeof(constants));
 
+  slots_[slot].proxy_count = std::uint32_t(spheres.size());
   auto* proxies = static_cast<gpu_layout::ProxySphere*>(slots_[slot].proxies.mapped());
   for (std::size_t i = 0; i < spheres.size(); ++i) {
     proxies[i].center_radius = glm::vec4(spheres[i].center, spheres[i].radius);
@@ -309,6 +316,12 @@ void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot, Fram
         break;
       }
       context_.begin_label(commands, frame_pass_name(FramePass::shadow));
+      if (shadow_splat_) {
+        shadow_splat_->record(commands, {&current.constants, &receivers_, &current.proxies, current.proxy_count,
+                                         &log_table_, &log_occlusion_});
+        context_.end_label(commands);
+        break;
+      }
       pipelines_.shadow.bind(commands);
       DescriptorPush()
           .uniform_buffer(0, current.constants)

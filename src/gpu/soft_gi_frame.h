@@ -21,6 +21,7 @@
 #include "gpu/frame_settings.h"
 #include "gpu/material_textures.h"
 #include "gpu/resources.h"
+#include "gpu/shadow_splat_pass.h"
 #include "image/image.h"
 #include "render/frame_tables.h"
 #include "render/shading.h"
@@ -134,6 +135,7 @@ class SoftGiFrame {
     Buffer proxies;       // ProxySphere[kMaxProxies], host-visible uniform
     Buffer ldr_readback;  // host-visible copies of the slot's finished frame
     Buffer hdr_readback;
+    std::uint32_t proxy_count = 0;  // instances of the raster splat
   };
 
   void record_ambient_occlusion(VkCommandBuffer commands, const Slot& slot) const;
@@ -143,6 +145,7 @@ class SoftGiFrame {
   int order_ = 4;
   FramePipelines pipelines_;
   WhiteTexture white_;  // bound by untextured draws
+  std::unique_ptr<ShadowSplatPass> shadow_splat_;  // only with SplatMethod::raster
   Image position_depth_, normal_, albedo_, depth_;
   Buffer receivers_, log_occlusion_, direct_, indirect_, shaded_, irradiance_, hdr_, ldr_;
   Buffer log_table_, visibility_table_, optimal_linear_, lighting_cube_, environment_;

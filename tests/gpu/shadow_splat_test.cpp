@@ -1,0 +1,137 @@
+// The raster shadow splat (ShadowSplatPass): its bounding mesh, its log-occlusion vectors against
+// the CPU twin at sample receivers (relative error ≤ 1e-3), and whole frames against the compute
+// gather (the other splat method), with the validation layer on.
+#include <cmath>
+
+#include "frame_fixture.h"
+#include "gpu/shadow_splat_pass.h"
+#include "gpu_test_context.h"
+#include "render/shading.h"
+
+namespace proxygi::gpu {
+namespace {
+
+using ShadowSplatTest = testing::GpuTest;
+
+struct Rendered {
+  std::unique_ptr<SoftGiFrame> frame;
+  render::FrameTables tables;
+};
+
+Rendered render_plane(Context& context, SplatMethod splat, int order, std::uint32_t size, std::uint32_t scale,
+                      const std::vector<render::Sphere>& spheres, const glm::vec3& eye) {
+  Rendered out;
+  render::FrameTableSettings table_settings;
+  table_settings.order = order;
+  out.tables = render::make_frame_tables(testing::constant_sky_sh(order, 1.0), table_settings);
+  FrameSettings settings;
+  settings.width = settings.height = size;
+  settings.receiver_scale = scale;
+  settings.frames_in_flight = 1;
+  settings.splat = splat;
+  image::ImageF sky(8, 4, glm::vec4(1.0f));
+  auto frame = SoftGiFrame::create(context, settings, out.tables, sky);
+  EXPECT_TRUE(frame.ok()) << (frame.ok() ? "" : frame.message());
+  if (!frame.ok()) return out;
+  out.frame = std::move(*frame);
+  const auto ground = testing::ground_plane(20.0f, 4);
+  auto mesh = upload_static_mesh(context, ground.positions, ground.normals, ground.indices, glm::vec4(0.8f));
+  EXPECT_TRUE(mesh.ok());
+  EXPECT_TRUE(out.frame->write_slot(0, testing::look_at(eye, {0.0f, 0.0f, 0.0f}, 60.0f, 1.0f), spheres).ok());
+  const DrawItem draws[] = {mesh->draw()};
+  EXPECT_TRUE(context.submit_and_wait([&](VkCommandBuffer commands) { out.frame->record(commands, 0, draws); }).ok());
+  return out;
+}
+
+// Spheres over, straddling and overlapping the plane, and a small one whose sphere of influence
+// contains the eye (eye {0, 1, 4}): its bounding mesh surrounds the camera.
+const std::vector<render::Sphere> kSpheres = {{{0.0f, 0.8f, 0.0f}, 0.5f, {0.9f, 0.1f, 0.1f}},
+                                              {{0.7f, 0.3f, 0.4f}, 0.3f, {0.1f, 0.2f, 0.9f}},
+                                              {{-0.6f, 0.1f, 0.9f}, 0.25f, {0.5f, 0.5f, 0.5f}},
+                                              {{0.0f, 0.5f, 3.0f}, 0.15f, {0.5f, 0.5f, 0.5f}}};
+const glm::vec3 kEye{0.0f, 1.0f, 4.0f};
+
+TEST(ShadowSplatMesh, BoundingMeshContainsTheUnitSphereAndFacesOutward) {
+  const auto mesh = unit_sphere_bounding_mesh();
+  ASSERT_EQ(mesh.size(), 240u);
+  float farthest = 0.0f;
+  for (std::size_t i = 0; i < mesh.size(); i += 3) {
+    const glm::vec3 a(mesh[i]), b(mesh[i + 1]), c(mesh[i + 2]);
+    const glm::vec3 normal = glm::normalize(glm::cross(b - a, c - a));
+    EXPECT_GE(glm::dot(normal, a), 1.0f) << "face " << i / 3 << " cuts into the unit sphere or faces inward";
+    farthest = std::max(farthest, glm::length(a));
+  }
+  EXPECT_LT(farthest, 1.1f) << "coarse but not loose";
+}
+
+TEST_F(ShadowSplatTest, RasterSplatMatchesCpuTwinAtSampleReceivers) {
+  for (int order : {4, 6}) {  // order 6: 9 targets, two draws of 5
+    for (std::uint32_t scale : {1u, 2u}) {
+      auto rendered = render_plane(context(), SplatMethod::raster, order, 64, scale, kSpheres, kEye);
+      ASSERT_TRUE(rendered.frame);
+      auto positions = rendered.frame->read_receiver_positions();
+      auto normals = rendered.frame->read_receiver_normals();
+      auto log_occlusion = rendered.frame->read_log_occlusion();
+      ASSERT_TRUE(positions.ok() && normals.ok() && log_occlusion.ok());
+      int checked = 0, shadowed = 0;
+      for (int y = 0; y < positions->height; y += 2)
+        for (int x = 0; x < positions->width; x += 2) {
+          const glm::vec4 p = positions->at(x, y);
+          if (p.w <= 0.0f) continue;
+          const glm::vec3 n = glm::vec3(normals->at(x, y));
+          const std::size_t index = std::size_t(y * positions->width + x);
+          const auto cpu = render::accumulate_log_occlusion(rendered.tables, glm::vec3(p), n, kSpheres);
+          float difference = 0.0f, norm = 0.0f;
+          for (std::size_t i = 0; i < cpu.size(); ++i) {
+            const float gpu = (*log_occlusion)[index * cpu.size() + i];
+            difference += (gpu - cpu[i]) * (gpu - cpu[i]);
+            norm += cpu[i] * cpu[i];
+          }
+          EXPECT_LE(std::sqrt(difference), 1e-3f * std::sqrt(norm) + 1e-6f)
+              << "order " << order << ", k " << scale << ", receiver " << x << "," << y;
+          ++checked;
+          if (norm > 1e-4f) ++shadowed;
+        }
+      EXPECT_GE(checked, 100 / int(scale * scale));
+      EXPECT_GE(shadowed, 20 / int(scale * scale)) << "the samples must include shadowed receivers";
+    }
+  }
+}
+
+TEST_F(ShadowSplatTest, RasterSplatMatchesComputeGatherOnWholeFrames) {
+  for (int order : {3, 5}) {
+    for (std::uint32_t scale : {1u, 4u}) {
+      auto raster = render_plane(context(), SplatMethod::raster, order, 96, scale, kSpheres, kEye);
+      auto gather = render_plane(context(), SplatMethod::compute, order, 96, scale, kSpheres, kEye);
+      ASSERT_TRUE(raster.frame && gather.frame);
+      auto raster_log = raster.frame->read_log_occlusion();
+      auto gather_log = gather.frame->read_log_occlusion();
+      auto raster_hdr = raster.frame->read_hdr();
+      auto gather_hdr = gather.frame->read_hdr();
+      ASSERT_TRUE(raster_log.ok() && gather_log.ok() && raster_hdr.ok() && gather_hdr.ok());
+      ASSERT_EQ(raster_log->size(), gather_log->size());
+      const std::size_t coefficients = std::size_t(order * order);
+      int shadowed = 0, mismatched = 0;
+      for (std::size_t receiver = 0; receiver < raster_log->size() / coefficients; ++receiver) {
+        float difference = 0.0f, norm = 0.0f;
+        for (std::size_t i = 0; i < coefficients; ++i) {
+          const float a = (*raster_log)[receiver * coefficients + i], b = (*gather_log)[receiver * coefficients + i];
+          difference += (a - b) * (a - b);
+          norm += b * b;
+        }
+        if (std::sqrt(difference) > 1e-3f * std::sqrt(norm) + 1e-6f) ++mismatched;
+        if (norm > 1e-4f) ++shadowed;
+      }
+      EXPECT_EQ(mismatched, 0) << "order " << order << ", k " << scale;
+      EXPECT_GE(shadowed, 50 / int(scale * scale));
+      float worst = 0.0f;
+      for (std::size_t i = 0; i < raster_hdr->pixels.size(); ++i)
+        worst = std::max(worst, glm::length(glm::vec3(raster_hdr->pixels[i] - gather_hdr->pixels[i])) /
+                                    std::max(glm::length(glm::vec3(gather_hdr->pixels[i])), 1e-3f));
+      EXPECT_LE(worst, 1e-3f) << "radiance, order " << order << ", k " << scale;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace proxygi::gpu
