@@ -3,7 +3,8 @@
 // second, for the default scene at 512×512 with receivers at 1/1, 1/2, 1/4, 1/8, the two
 // baselines of the speed–accuracy chart on the default scene (vertex-based accumulation; scalar
 // AO at 1/4) and the built-in crowd of 20 characters at 1/4, in one run, with the chosen indirect
-// operator (default averaged).
+// operator (default averaged). The image-space settings run with both shadow splats (compute
+// gather and raster splat; the raster splat's depth set-up and resolve also timed on their own).
 // Whole frames are timed pipelined (two frames in flight, as `record` runs); passes are timed one
 // fenced submit each with the CPU clock (lavapipe's timestamps are unreliable).
 #include <sys/resource.h>
@@ -13,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "apps/bench_splat_stages.h"
 #include "apps/commands.h"
 #include "gpu/scene_renderer.h"
 #include "scene/scene_defaults.h"
@@ -38,24 +40,32 @@ scene::IndirectOperator indirect_operator(const std::string& name) {
 struct ConfigResult {
   std::string name;
   std::string method;  // render.method: image, vertex, ao
+  std::string splat;   // render.splat: compute, raster
   std::size_t receivers = 0;
   int receiver_scale = 0;
   std::size_t characters = 0;
   double frame_ms = 0.0;  // pipelined wall time per frame
   gpu::PassTimings passes;  // mean over the timed frames
   double pairs_per_second = 0.0;
+  SplatStageTimes raster_stages;  // raster splat only
 };
 
+const char* splat_name(scene::SplatMethod method) {
+  return method == scene::SplatMethod::raster ? "raster" : "compute";
+}
+
 Result<ConfigResult> run_config(gpu::Context& context, const std::string& name, scene::Scene scene, int scale,
-                                const BenchOptions& options) {
+                                const BenchOptions& options, scene::SplatMethod splat = scene::SplatMethod::compute) {
   scene.output.width = scene.output.height = options.size;
   scene.render.receiver_scale = scale;
+  scene.render.splat = splat;
   scene.render.indirect_operator = indirect_operator(options.indirect_operator);
   auto renderer = gpu::SceneRenderer::create(context, scene, {assets_dir(), true});
   if (!renderer) return renderer.error();
   ConfigResult result;
   result.name = name;
   result.method = std::string(scene::names::name_of(scene::names::kShadingMethod, scene.render.method));
+  result.splat = splat_name(splat);
   result.receiver_scale = scale;
   const gpu::FrameSettings& settings = (*renderer)->frame().settings();
   result.receivers = settings.method == gpu::ShadingMethod::vertex
@@ -89,6 +99,12 @@ Result<ConfigResult> run_config(gpu::Context& context, const std::string& name, 
   const double receivers = double(result.receivers);
   const double shadow_ms = result.passes.milliseconds[std::size_t(gpu::FramePass::shadow)];
   result.pairs_per_second = shadow_ms > 0.0 ? receivers * double(result.passes.proxies) / (shadow_ms * 1e-3) : 0.0;
+  if (splat == scene::SplatMethod::raster) {
+    auto stages = time_splat_stages(context, scene.render.sh_order, std::uint32_t(options.size), std::uint32_t(scale),
+                                    options.frames);
+    if (!stages) return stages.error();
+    result.raster_stages = *stages;
+  }
   return result;
 }
 
@@ -96,11 +112,15 @@ int run_bench_frame(const BenchOptions& options) {
   auto context = gpu::Context::create({.device_request = options.device});
   if (!context) return fail_runtime(context.message());
   std::vector<ConfigResult> results;
-  for (int scale : {1, 2, 4, 8}) {
-    auto result = run_config(**context, "default", scene::default_scene(), scale, options);
-    if (!result) return fail_runtime("bench frame: default scene, 1/" + std::to_string(scale) + ": " + result.message());
-    results.push_back(*result);
-  }
+  constexpr scene::SplatMethod kSplats[] = {scene::SplatMethod::compute, scene::SplatMethod::raster};
+  for (int scale : {1, 2, 4, 8})
+    for (scene::SplatMethod splat : kSplats) {
+      auto result = run_config(**context, "default", scene::default_scene(), scale, options, splat);
+      if (!result)
+        return fail_runtime("bench frame: default scene, 1/" + std::to_string(scale) + ", " + splat_name(splat) +
+                            " splat: " + result.message());
+      results.push_back(*result);
+    }
   for (auto method : {scene::ShadingMethod::vertex, scene::ShadingMethod::ambient_occlusion}) {
     scene::Scene baseline = scene::default_scene();
     baseline.render.method = method;
@@ -108,15 +128,20 @@ int run_bench_frame(const BenchOptions& options) {
     if (!result) return fail_runtime("bench frame: default scene, baseline: " + result.message());
     results.push_back(*result);
   }
-  auto crowd = run_config(**context, "crowd", scene::crowd_scene(), 4, options);
-  if (!crowd) return fail_runtime("bench frame: crowd scene: " + crowd.message());
-  results.push_back(*crowd);
+  for (scene::SplatMethod splat : kSplats) {
+    auto crowd = run_config(**context, "crowd", scene::crowd_scene(), 4, options, splat);
+    if (!crowd)
+      return fail_runtime("bench frame: crowd scene, " + std::string(splat_name(splat)) + " splat: " + crowd.message());
+    results.push_back(*crowd);
+  }
 
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   const double peak_mib = double(usage.ru_maxrss) / 1024.0;
   const auto& report = (*context)->report();
-  const double k1 = results[0].frame_ms, k4 = results[2].frame_ms;
+  const scene::SplatMethod default_splat = scene::default_scene().render.splat;
+  const std::size_t column = default_splat == scene::SplatMethod::raster ? 1 : 0;  // results: compute, raster pairs
+  const double k1 = results[0 + column].frame_ms, k4 = results[4 + column].frame_ms;
 
   if (options.json) {
     nlohmann::json out;
@@ -130,6 +155,7 @@ int run_bench_frame(const BenchOptions& options) {
     for (const auto& result : results) {
       nlohmann::json entry = {{"scene", result.name},
                               {"method", result.method},
+                              {"splat", result.splat},
                               {"receivers", result.receivers},
                               {"receiver_scale", result.receiver_scale},
                               {"characters", result.characters},
@@ -140,6 +166,9 @@ int run_bench_frame(const BenchOptions& options) {
                               {"shadow_pairs_per_second", result.pairs_per_second}};
       for (std::size_t p = 0; p < result.passes.milliseconds.size(); ++p)
         entry["pass_ms"][gpu::frame_pass_name(gpu::FramePass(p))] = result.passes.milliseconds[p];
+      if (result.splat == "raster")
+        entry["raster_splat_stage_ms"] = {{"depth", result.raster_stages.depth_ms},
+                                          {"resolve", result.raster_stages.resolve_ms}};
       out["results"].push_back(entry);
     }
     std::printf("%s\n", out.dump(2).c_str());
@@ -147,19 +176,34 @@ int run_bench_frame(const BenchOptions& options) {
   }
   std::printf("device: %s (%s), %dx%d, %d frames per setting, %s indirect operator\n", report.name.c_str(),
               report.driver.c_str(), options.size, options.size, options.frames, options.indirect_operator.c_str());
-  std::printf("%-8s %-6s %3s %9s %5s %7s %9s %6s |", "scene", "method", "k", "receivers", "chars", "proxies",
-              "frame ms", "fps");
+  std::printf("%-8s %-6s %-7s %3s %9s %5s %7s %9s %6s |", "scene", "method", "splat", "k", "receivers", "chars",
+              "proxies", "frame ms", "fps");
   for (std::size_t p = 0; p < std::size_t(gpu::FramePass::count); ++p)
     std::printf(" %9.9s", gpu::frame_pass_name(gpu::FramePass(p)));
   std::printf(" | %s\n", "shadow Mpairs/s");
   for (const auto& result : results) {
     const std::string k = result.method == "vertex" ? "-" : "1/" + std::to_string(result.receiver_scale);
-    std::printf("%-8s %-6s %3s %9zu %5zu %7zu %9.2f %6.1f |", result.name.c_str(), result.method.c_str(), k.c_str(),
-                result.receivers, result.characters, result.passes.proxies, result.frame_ms, 1000.0 / result.frame_ms);
+    std::printf("%-8s %-6s %-7s %3s %9zu %5zu %7zu %9.2f %6.1f |", result.name.c_str(), result.method.c_str(),
+                result.splat.c_str(), k.c_str(), result.receivers, result.characters, result.passes.proxies,
+                result.frame_ms, 1000.0 / result.frame_ms);
     for (double ms : result.passes.milliseconds) std::printf(" %9.2f", ms);
     std::printf(" | %.0f\n", result.pairs_per_second / 1e6);
   }
-  std::printf("1/4 receivers with %s upsampling vs 1/1: %.2fx faster per frame\n", "bilateral", k1 / k4);
+  std::printf("shadow pass: scene, k, compute gather ms (Mpairs/s), raster splat ms (Mpairs/s; of which depth "
+              "set-up + resolve ms)\n");
+  const auto shadow = [](const ConfigResult& r) { return r.passes.milliseconds[std::size_t(gpu::FramePass::shadow)]; };
+  for (std::size_t i = 1; i < results.size(); ++i) {
+    const ConfigResult& gather = results[i - 1];
+    const ConfigResult& raster = results[i];
+    if (raster.splat != "raster" || gather.splat != "compute" || gather.name != raster.name ||
+        gather.method != raster.method || gather.receiver_scale != raster.receiver_scale)
+      continue;
+    std::printf("  %-8s 1/%d  %8.2f (%5.0f)  %8.2f (%5.0f; %.2f + %.2f)\n", gather.name.c_str(), gather.receiver_scale,
+                shadow(gather), gather.pairs_per_second / 1e6, shadow(raster), raster.pairs_per_second / 1e6,
+                raster.raster_stages.depth_ms, raster.raster_stages.resolve_ms);
+  }
+  std::printf("1/4 receivers with %s upsampling vs 1/1 (%s splat): %.2fx faster per frame\n", "bilateral",
+              splat_name(default_splat), k1 / k4);
   std::printf("peak resident memory: %.0f MiB\n", peak_mib);
   return kExitOk;
 }

@@ -49,11 +49,39 @@ layout(location = 7) out vec4 target7;
 
 float f[SH_COUNT];
 
-float coefficient(uint i) { return i < uint(SH_COUNT) ? f[min(i, uint(SH_COUNT - 1))] : 0.0; }
-vec4 target_value(uint target) {
-  uint first = push.first_coefficient + 4u * target;
-  return vec4(coefficient(first), coefficient(first + 1u), coefficient(first + 2u), coefficient(first + 3u));
-}
+// Coefficient i, 0 past the last one (the padding of the last target). Called with constant
+// indices only, so f stays in registers (a dynamically indexed array spills on lavapipe).
+#define COEFFICIENT(i) ((i) < SH_COUNT ? f[min((i), SH_COUNT - 1)] : 0.0)
+#define TARGET_VALUE(first) \
+  vec4(COEFFICIENT(first), COEFFICIENT((first) + 1), COEFFICIENT((first) + 2), COEFFICIENT((first) + 3))
+
+// Writes the pass's targets from coefficient `first` (a constant) on.
+#if TARGETS > 7
+#define WRITE_TARGETS(first) target0 = TARGET_VALUE(first); target1 = TARGET_VALUE((first) + 4); \
+  target2 = TARGET_VALUE((first) + 8); target3 = TARGET_VALUE((first) + 12); target4 = TARGET_VALUE((first) + 16); \
+  target5 = TARGET_VALUE((first) + 20); target6 = TARGET_VALUE((first) + 24); target7 = TARGET_VALUE((first) + 28);
+#elif TARGETS > 6
+#define WRITE_TARGETS(first) target0 = TARGET_VALUE(first); target1 = TARGET_VALUE((first) + 4); \
+  target2 = TARGET_VALUE((first) + 8); target3 = TARGET_VALUE((first) + 12); target4 = TARGET_VALUE((first) + 16); \
+  target5 = TARGET_VALUE((first) + 20); target6 = TARGET_VALUE((first) + 24);
+#elif TARGETS > 5
+#define WRITE_TARGETS(first) target0 = TARGET_VALUE(first); target1 = TARGET_VALUE((first) + 4); \
+  target2 = TARGET_VALUE((first) + 8); target3 = TARGET_VALUE((first) + 12); target4 = TARGET_VALUE((first) + 16); \
+  target5 = TARGET_VALUE((first) + 20);
+#elif TARGETS > 4
+#define WRITE_TARGETS(first) target0 = TARGET_VALUE(first); target1 = TARGET_VALUE((first) + 4); \
+  target2 = TARGET_VALUE((first) + 8); target3 = TARGET_VALUE((first) + 12); target4 = TARGET_VALUE((first) + 16);
+#elif TARGETS > 3
+#define WRITE_TARGETS(first) target0 = TARGET_VALUE(first); target1 = TARGET_VALUE((first) + 4); \
+  target2 = TARGET_VALUE((first) + 8); target3 = TARGET_VALUE((first) + 12);
+#elif TARGETS > 2
+#define WRITE_TARGETS(first) target0 = TARGET_VALUE(first); target1 = TARGET_VALUE((first) + 4); \
+  target2 = TARGET_VALUE((first) + 8);
+#elif TARGETS > 1
+#define WRITE_TARGETS(first) target0 = TARGET_VALUE(first); target1 = TARGET_VALUE((first) + 4);
+#else
+#define WRITE_TARGETS(first) target0 = TARGET_VALUE(first);
+#endif
 
 void main() {
   uvec2 pixel = uvec2(gl_FragCoord.xy);
@@ -76,26 +104,13 @@ void main() {
     float scaled = zonal_scale(l) * zonal;
     for (int m = -l; m <= l; ++m) f[l * (l + 1) + m] = scaled * basis[l * (l + 1) + m];
   }
-  target0 = target_value(0u);
-#if TARGETS > 1
-  target1 = target_value(1u);
-#endif
-#if TARGETS > 2
-  target2 = target_value(2u);
-#endif
-#if TARGETS > 3
-  target3 = target_value(3u);
-#endif
-#if TARGETS > 4
-  target4 = target_value(4u);
-#endif
-#if TARGETS > 5
-  target5 = target_value(5u);
-#endif
-#if TARGETS > 6
-  target6 = target_value(6u);
-#endif
-#if TARGETS > 7
-  target7 = target_value(7u);
+#if PROXYGI_SPLAT_PASSES(SH_ORDER) == 1
+  WRITE_TARGETS(0)
+#else  // two passes (order 6)
+  if (push.first_coefficient == 0u) {
+    WRITE_TARGETS(0)
+  } else {
+    WRITE_TARGETS(4 * TARGETS)
+  }
 #endif
 }
