@@ -30,7 +30,7 @@ VkRenderingAttachmentInfo attachment(const Image& image, VkImageLayout layout, V
 
 }  // namespace
 
-std::vector<glm::vec4> unit_sphere_bounding_mesh() {
+std::vector<glm::vec4> unit_sphere_bounding_mesh(int subdivisions) {
   // Icosahedron, counter-clockwise seen from outside.
   const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
   std::vector<glm::vec3> vertices = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
@@ -40,7 +40,7 @@ std::vector<glm::vec4> unit_sphere_bounding_mesh() {
                                              {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
                                              {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
                                              {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}}};
-  // One subdivision: each face into four, new vertices pushed onto the unit sphere.
+  // Each subdivision splits every face into four, new vertices pushed onto the unit sphere.
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> midpoints;
   auto midpoint = [&](std::uint32_t a, std::uint32_t b) {
     const auto key = std::minmax(a, b);
@@ -48,10 +48,14 @@ std::vector<glm::vec4> unit_sphere_bounding_mesh() {
     vertices.push_back(glm::normalize(vertices[a] + vertices[b]));
     return midpoints[key] = std::uint32_t(vertices.size() - 1);
   };
-  std::vector<glm::uvec3> triangles;
-  for (const auto& face : faces) {
-    const std::uint32_t ab = midpoint(face.x, face.y), bc = midpoint(face.y, face.z), ca = midpoint(face.z, face.x);
-    triangles.insert(triangles.end(), {{face.x, ab, ca}, {face.y, bc, ab}, {face.z, ca, bc}, {ab, bc, ca}});
+  std::vector<glm::uvec3> triangles(faces.begin(), faces.end());
+  for (int level = 0; level < subdivisions; ++level) {
+    std::vector<glm::uvec3> finer;
+    for (const auto& face : triangles) {
+      const std::uint32_t ab = midpoint(face.x, face.y), bc = midpoint(face.y, face.z), ca = midpoint(face.z, face.x);
+      finer.insert(finer.end(), {{face.x, ab, ca}, {face.y, bc, ab}, {face.z, ca, bc}, {ab, bc, ca}});
+    }
+    triangles = std::move(finer);
   }
   // Scale so every face plane is at distance ≥ 1: the polyhedron then contains the unit sphere.
   float inradius = 1.0f;
