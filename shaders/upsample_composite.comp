@@ -75,7 +75,13 @@ vec3 upsampled_irradiance(uvec2 pixel, float depth) {
     bilinear_sum += weight;
     if (bilateral) {
       float facing = max(dot(normal, receivers[index].normal.xyz), 0.0);
-      weight *= pow(facing, 32.0) / (epsilon + abs(depth - tap_depth));
+      // facing^32 by five squarings: pow() is exp2(32 log2 x), several times dearer on lavapipe.
+      facing *= facing;
+      facing *= facing;
+      facing *= facing;
+      facing *= facing;
+      facing *= facing;
+      weight *= facing / (epsilon + abs(depth - tap_depth));
       weight *= epsilon;
     }
     total += weight * value;
