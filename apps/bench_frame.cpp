@@ -9,13 +9,13 @@
 // fenced submit each with the CPU clock (lavapipe's timestamps are unreliable).
 #include <sys/resource.h>
 
-#include <chrono>
 #include <cstdio>
 
 #include <nlohmann/json.hpp>
 
 #include "apps/bench_splat_stages.h"
 #include "apps/commands.h"
+#include "apps/frame_timing.h"
 #include "gpu/scene_renderer.h"
 #include "scene/scene_defaults.h"
 #include "scene/scene_names.h"
@@ -73,20 +73,9 @@ Result<ConfigResult> run_config(gpu::Context& context, const std::string& name, 
                          : std::size_t(settings.receiver_width()) * settings.receiver_height();
   result.characters = scene.characters.size();
   const int first = scene.output.first_frame;
-  for (int warm = 0; warm < 2; ++warm)
-    if (auto done = (*renderer)->render(first + warm); !done) return done.error();
-
-  // Pipelined: keep two frames in flight.
-  const auto start = std::chrono::steady_clock::now();
-  for (int i = 0; i < options.frames; ++i) {
-    const int frame = first + 2 + i;
-    if (Status begun = (*renderer)->begin_frame(frame); !begun) return begun.error();
-    if (i > 0)
-      if (auto done = (*renderer)->finish_frame(frame - 1); !done) return done.error();
-  }
-  if (auto done = (*renderer)->finish_frame(first + 1 + options.frames); !done) return done.error();
-  result.frame_ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() / options.frames;
+  auto frame_ms = time_pipelined_frames(**renderer, first, options.frames);
+  if (!frame_ms) return frame_ms.error();
+  result.frame_ms = *frame_ms;
 
   for (int i = 0; i < options.frames; ++i) {
     auto timings = (*renderer)->time_passes(first + 2 + i);

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/commands.h"
+#include "apps/matplotlib_chart.h"
 #include "base/atomic_file.h"
 #include "sh/accuracy_study.h"
 
@@ -153,23 +154,8 @@ fig.savefig(sys.argv[1], dpi=110, format="png")
 )PY";
 
 int draw_chart(const nlohmann::json& json, const std::string& path) {
-  if (std::system("/usr/bin/python3 -c 'import matplotlib' >/dev/null 2>&1") != 0)
-    return fail_runtime("bench sh: --chart needs matplotlib for /usr/bin/python3 (Debian: apt-get install python3-matplotlib)");
-  const std::string data = json.dump();
-  // The script travels as an argument; the data on stdin. The PNG is written through a
-  // temporary so a failed run never leaves a partial chart.
-  const Status written = write_via_temporary(path, [&](const std::filesystem::path& temporary) -> Status {
-    std::string command = "/usr/bin/python3 -c \"$PROXYGI_CHART_SCRIPT\" '" + temporary.string() + "'";
-    if (temporary.string().find('\'') != std::string::npos) return make_error("chart path contains a quote");
-    if (setenv("PROXYGI_CHART_SCRIPT", kChartScript, 1) != 0) return make_error("setenv failed");
-    std::FILE* pipe = popen(command.c_str(), "w");
-    if (pipe == nullptr) return make_error("cannot start /usr/bin/python3");
-    const bool sent = std::fwrite(data.data(), 1, data.size(), pipe) == data.size();
-    const int status = pclose(pipe);
-    if (!sent || status != 0) return make_error("matplotlib chart script failed");
-    return {};
-  });
-  if (!written) return fail_runtime("bench sh: " + path + ": " + written.message());
+  if (const Status drawn = draw_matplotlib_chart(kChartScript, json, path); !drawn)
+    return fail_runtime("bench sh: " + path + ": " + drawn.message());
   return kExitOk;
 }
 

@@ -1,0 +1,178 @@
+// proxygi bench chart [--json] [--out DIR] [--cache DIR] [--size N] [--frames N] [--timing-frames N]
+//   [--reference-spp N] [--scenes a,b] [--shared DIR] [--lighting sh|full] [--quick]
+//   [--references-only]
+// The speed–accuracy chart: for the default scene and each shared character, a few frames of
+// motion, every proxy setting, the vertex and AO baselines, and path tracing at 1, 4, 16, 64 spp
+// with and without the guided filter: ms per frame against the error to a converged path-traced
+// reference, measured in one run on this machine. Writes DIR/bench-chart.csv, .md and .png
+// (log–log, Pareto front named), prints the table (or JSON with --json), and reports the goals.
+// References are cached under --cache and reused (or continued) by later runs.
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+#include "apps/bench_chart_report.h"
+#include "apps/chart_methods.h"
+#include "apps/commands.h"
+#include "base/atomic_file.h"
+#include "base/log.h"
+
+namespace proxygi::app {
+namespace {
+
+struct ChartArgs {
+  bool json = false;
+  std::string out = "out/chart";
+  std::string cache = "out/chart-cache";
+  int size = 192;
+  int frames = 2;
+  int timing_frames = 4;
+  int reference_spp = 1024;
+  std::vector<std::string> scenes;
+  std::string shared = "../shared";
+  std::string lighting = "sh";
+  bool quick = false;
+  bool references_only = false;
+  std::string device;
+};
+
+// Path-tracing rows of one scene: per (samples, guided) the mean over its frames.
+void add_path_tracing_rows(const std::string& scene, const std::vector<std::vector<study::PathTracingScore>>& frames,
+                           std::vector<study::ChartRow>& rows) {
+  if (frames.empty()) return;
+  for (std::size_t i = 0; i < frames.front().size(); ++i) {
+    study::ChartRow row;
+    row.scene = scene;
+    row.method = frames.front()[i].guided ? "path+guided" : "path";
+    row.samples = frames.front()[i].samples;
+    const double count = double(frames.size());
+    for (const auto& frame : frames) {
+      row.milliseconds += frame[i].milliseconds / count;
+      row.relative_mse += frame[i].scores.relative_mse / count;
+      row.rmse += frame[i].scores.rmse / count;
+      row.ssim += frame[i].scores.ssim / count;
+      row.flip += frame[i].scores.flip / count;
+    }
+    rows.push_back(row);
+  }
+}
+
+int run_bench_chart(const ChartArgs& args) {
+  study::ChartSceneOptions scene_options;
+  scene_options.size = args.size;
+  scene_options.frame_count = args.frames;
+  scene_options.shared_dir = args.shared;
+  scene_options.assets_dir = assets_dir();
+  scene_options.rig_cache_dir = std::filesystem::path(args.cache) / "rigs";
+  scene_options.only = args.scenes;
+  std::error_code error;
+  std::filesystem::create_directories(scene_options.rig_cache_dir, error);
+  if (error) return fail_runtime(args.cache + ": cannot create: " + error.message());
+  auto scenes = study::chart_scenes(scene_options);
+  if (!scenes) return fail_bad_input("bench chart: " + scenes.message());
+  if (scenes->empty()) return fail_bad_input("bench chart: no scene selected");
+
+  study::ReferenceOptions reference_options;
+  reference_options.reference_spp = args.reference_spp;
+  reference_options.lighting = args.lighting == "full" ? ref::LightingKind::full : ref::LightingKind::sh;
+  reference_options.cache_dir = args.cache;
+  reference_options.assets_dir = assets_dir();
+  reference_options.guided_radius = std::max(2, args.size / 24);
+  reference_options.progress = !args.json;
+  const std::vector<int> sample_counts = args.quick ? std::vector<int>{1, 4} : std::vector<int>{1, 4, 16, 64};
+
+  std::unique_ptr<gpu::Context> context;
+  if (!args.references_only) {
+    auto created = gpu::Context::create({.device_request = args.device});
+    if (!created) return fail_runtime(created.message());
+    context = std::move(*created);
+  }
+  std::vector<study::ChartRow> rows;
+  const std::vector<MethodSetting> grid = method_grid(args.quick);
+  for (const study::ChartScene& chart : *scenes) {
+    std::vector<study::FrameReference> references;
+    std::vector<std::vector<study::PathTracingScore>> path_tracing;
+    for (int frame : chart.frames) {
+      auto tracer = study::FrameTracer::create(chart, frame, reference_options);
+      if (!tracer) return fail_runtime("bench chart: " + chart.name + ": " + tracer.message());
+      auto reference = study::load_or_render_reference(chart, frame, **tracer, reference_options);
+      if (!reference) return fail_runtime("bench chart: " + chart.name + " reference: " + reference.message());
+      if (!args.references_only) {
+        auto scores = study::score_path_tracing(**tracer, *reference, sample_counts, reference_options);
+        if (!scores) return fail_runtime("bench chart: " + chart.name + " path tracing: " + scores.message());
+        path_tracing.push_back(std::move(*scores));
+      }
+      references.push_back(std::move(*reference));
+    }
+    if (args.references_only) continue;
+    add_path_tracing_rows(chart.name, path_tracing, rows);
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+      auto row = run_raster_method(*context, chart, grid[i], references, {args.timing_frames});
+      const std::string label = study::row_label(describe_setting(grid[i], chart.name));
+      if (!row) return fail_runtime("bench chart: " + chart.name + ", " + label + ": " + row.message());
+      if (!args.json)
+        std::fprintf(stderr, "\r  %s: %zu/%zu %-40s %8.2f ms  relMSE %.4g   ", chart.name.c_str(), i + 1, grid.size(),
+                     label.c_str(), row->milliseconds, row->relative_mse);
+      rows.push_back(*row);
+    }
+    if (!args.json) std::fprintf(stderr, "\n");
+  }
+  if (args.references_only) {
+    std::printf("bench chart: references ready under %s\n", args.cache.c_str());
+    return kExitOk;
+  }
+  if (scenes->size() > 1) {
+    std::vector<study::ChartRow> means = study::mean_over_scenes(rows);
+    rows.insert(rows.begin(), means.begin(), means.end());
+  }
+  study::mark_pareto_fronts(rows);
+
+  ChartReportContext report;
+  report.device = context->report().name;
+  report.driver = context->report().driver;
+  report.size = args.size;
+  report.frames = args.frames;
+  report.timing_frames = args.timing_frames;
+  report.reference_spp = args.reference_spp;
+  report.lighting = args.lighting == "full" ? "full environment" : "environment band-limited to SH order 6";
+  for (const study::ChartScene& chart : *scenes) report.scenes.push_back(chart.name);
+  if (Status written = write_chart_report(args.out, rows, report); !written)
+    return fail_runtime("bench chart: " + written.message());
+  if (args.json)
+    std::printf("%s\n", chart_report_json(rows, report).dump(2).c_str());
+  else
+    std::printf("%s", chart_summary_text(rows, report).c_str());
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_bench_chart_command(CLI::App& bench, CommandRunner& runner) {
+  auto args = std::make_shared<ChartArgs>();
+  auto* command = bench.add_subcommand("chart", "Speed against error to a path-traced reference, every method and setting");
+  command->add_flag("--json", args->json, "Print the rows and goals as JSON on stdout");
+  command->add_option("--out", args->out, "Folder for bench-chart.csv, .md and .png")->capture_default_str();
+  command->add_option("--cache", args->cache, "Folder of cached references and proxy rigs")->capture_default_str();
+  command->add_option("--size", args->size, "Square image size in pixels")->check(CLI::Range(16, 2048))->capture_default_str();
+  command->add_option("--frames", args->frames, "Frames of motion per scene")->check(CLI::Range(1, 16))->capture_default_str();
+  command->add_option("--timing-frames", args->timing_frames, "Pipelined frames timed per setting")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  command->add_option("--reference-spp", args->reference_spp, "Samples per pixel of the references")
+      ->check(CLI::Range(1, 1 << 20))
+      ->capture_default_str();
+  command->add_option("--scenes", args->scenes, "Only these scenes (default, CesiumMan, Fox, RiggedSimple)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"default", "CesiumMan", "Fox", "RiggedSimple"}));
+  command->add_option("--shared", args->shared, "Folder holding assets/gltf with the sample characters")
+      ->capture_default_str();
+  command->add_option("--lighting", args->lighting, "Reference lighting: sh (order 6) or full")
+      ->check(CLI::IsMember({"sh", "full"}))
+      ->capture_default_str();
+  command->add_flag("--quick", args->quick, "A small grid (default setting and each baseline), 1 and 4 spp");
+  command->add_flag("--references-only", args->references_only, "Only render (or complete) the cached references");
+  add_device_option(*command, args->device);
+  command->callback([&runner, args] { runner = [args] { return run_bench_chart(*args); }; });
+}
+
+}  // namespace proxygi::app

@@ -1,0 +1,147 @@
+#include "apps/bench_chart_report.h"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "apps/matplotlib_chart.h"
+#include "base/atomic_file.h"
+#include "scene/scene.h"
+
+namespace proxygi::app {
+namespace {
+
+std::string cpu_model() {
+  std::ifstream info("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(info, line))
+    if (line.rfind("model name", 0) == 0) {
+      const std::size_t colon = line.find(':');
+      if (colon != std::string::npos) return line.substr(colon + 2);
+    }
+  return "unknown CPU";
+}
+
+std::string machine_line(const ChartReportContext& context) {
+  std::ostringstream text;
+  text << "Measured on " << (context.cpu.empty() ? cpu_model() : context.cpu) << " (" << std::thread::hardware_concurrency() << " hardware threads), Vulkan "
+       << "device " << context.device << " (" << context.driver << "); " << context.size << "x" << context.size
+       << " pixels, " << context.frames << " frames of motion per scene, " << context.timing_frames
+       << " pipelined frames timed per setting; references: one-bounce path tracing at " << context.reference_spp
+       << " spp under the " << context.lighting << ".";
+  return text.str();
+}
+
+std::string goal_line(const char* name, const study::GoalResult& goal) {
+  std::ostringstream text;
+  text << "- **" << name << "**: ";
+  if (!goal.evaluated) return text.str() + "not evaluated (rows missing)\n";
+  text << (goal.met ? "met" : "not met");
+  if (!goal.compared.empty()) text << " (" << goal.ratio << "x against " << goal.compared << ")";
+  text << ". " << goal.note << ".\n";
+  return text.str();
+}
+
+// Reads the rows as JSON on stdin; one log–log panel per scene; argv[1] = PNG.
+constexpr const char* kChartScript = R"PY(
+import json, sys, math
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+data = json.load(sys.stdin)
+rows = data["rows"]
+scenes = data["scenes"]
+columns = min(3, len(scenes))
+lines = math.ceil(len(scenes) / columns)
+fig, axes = plt.subplots(lines, columns, figsize=(6.2 * columns, 5.0 * lines), squeeze=False)
+style = {"proxy": ("tab:blue", "o"), "vertex": ("tab:red", "s"), "ao": ("tab:orange", "^"),
+         "path": ("tab:gray", "x"), "path+guided": ("tab:green", "D")}
+for index, scene in enumerate(scenes):
+    ax = axes[index // columns][index % columns]
+    mine = [r for r in rows if r["scene"] == scene]
+    for method, (color, marker) in style.items():
+        points = [r for r in mine if r["method"] == method]
+        if points:
+            ax.scatter([r["ms_per_frame"] for r in points], [r["relative_mse"] for r in points], color=color,
+                       marker=marker, s=18, alpha=0.75, label=method)
+    front = sorted([r for r in mine if r["pareto"]], key=lambda r: r["ms_per_frame"])
+    ax.plot([r["ms_per_frame"] for r in front], [r["relative_mse"] for r in front], color="black", lw=0.8,
+            label="Pareto front")
+    for r in front:
+        ax.annotate(r["label"], (r["ms_per_frame"], r["relative_mse"]), fontsize=6, xytext=(3, 3),
+                    textcoords="offset points")
+    for r in mine:
+        if r["default"] and r["method"] == "proxy":
+            ax.scatter([r["ms_per_frame"]], [r["relative_mse"]], facecolors="none", edgecolors="black", s=90,
+                       label="default setting")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("ms per frame (this machine)")
+    ax.set_ylabel("relative MSE vs reference")
+    ax.set_title("mean over scenes" if scene == "all" else scene, fontsize=10)
+    ax.grid(True, which="both", alpha=0.25)
+    if index == 0:
+        ax.legend(fontsize=7)
+for index in range(len(scenes), lines * columns):
+    axes[index // columns][index % columns].axis("off")
+fig.suptitle(data["machine"], fontsize=7, wrap=True)
+fig.tight_layout(rect=(0, 0, 1, 0.95))
+fig.savefig(sys.argv[1], dpi=110, format="png")
+)PY";
+
+}  // namespace
+
+std::string goal_scene(const std::vector<study::ChartRow>& rows) {
+  for (const study::ChartRow& row : rows)
+    if (row.scene == study::kAllScenes) return study::kAllScenes;
+  return rows.empty() ? std::string() : rows.front().scene;
+}
+
+nlohmann::json chart_report_json(const std::vector<study::ChartRow>& rows, const ChartReportContext& context) {
+  nlohmann::json out;
+  out["machine"] = machine_line(context);
+  out["rows"] = nlohmann::json::parse(study::to_json(rows));
+  std::vector<std::string> scenes;
+  const std::string summary = goal_scene(rows);
+  if (summary == study::kAllScenes) scenes.push_back(summary);
+  for (const std::string& scene : context.scenes) scenes.push_back(scene);
+  out["scenes"] = scenes;
+  auto goal_json = [](const study::GoalResult& goal) {
+    return nlohmann::json{{"evaluated", goal.evaluated}, {"met", goal.met}, {"ratio", goal.ratio},
+                          {"compared", goal.compared}, {"note", goal.note}};
+  };
+  out["goals"]["scene"] = summary;
+  out["goals"]["path_tracing_50x"] = goal_json(study::path_tracing_goal(rows, summary));
+  out["goals"]["vertex_2x"] = goal_json(study::vertex_goal(rows, summary, scene::RenderSettings{}.sh_order));
+  return out;
+}
+
+std::string chart_summary_text(const std::vector<study::ChartRow>& rows, const ChartReportContext& context) {
+  const std::string scene = goal_scene(rows);
+  std::ostringstream text;
+  text << machine_line(context) << "\n\nGoals (scene " << scene << "):\n"
+       << goal_line("proxy default vs guided path tracing, >= 50x less time at its error",
+                    study::path_tracing_goal(rows, scene))
+       << goal_line("image space >= 2x faster than vertex-based at equal or lower error", study::vertex_goal(rows, scene, scene::RenderSettings{}.sh_order))
+       << "\n" << study::to_markdown(rows, scene);
+  return text.str();
+}
+
+Status write_chart_report(const std::string& folder, const std::vector<study::ChartRow>& rows,
+                          const ChartReportContext& context) {
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  if (error) return make_error(folder + ": cannot create: " + error.message());
+  const std::filesystem::path base = std::filesystem::path(folder) / "bench-chart";
+  if (Status s = write_file_atomically(base.string() + ".csv", study::to_csv(rows)); !s) return s;
+
+  std::ostringstream markdown;
+  markdown << "# Speed–accuracy chart (`proxygi bench chart`)\n\n" << chart_summary_text(rows, context);
+  for (const std::string& scene : context.scenes)
+    markdown << "\n## " << scene << "\n\n" << study::to_markdown(rows, scene);
+  if (Status s = write_file_atomically(base.string() + ".md", markdown.str()); !s) return s;
+  return draw_matplotlib_chart(kChartScript, chart_report_json(rows, context), base.string() + ".png");
+}
+
+}  // namespace proxygi::app

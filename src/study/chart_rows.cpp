@@ -1,0 +1,211 @@
+#include "study/chart_rows.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+namespace proxygi::study {
+
+std::string row_label(const ChartRow& row) {
+  std::ostringstream text;
+  text << row.method;
+  if (row.method == "path" || row.method == "path+guided") {
+    text << ' ' << row.samples << " spp";
+    return text.str();
+  }
+  if (row.sh_order > 0) text << " n" << row.sh_order;
+  if (row.receiver_scale > 0) text << " k" << row.receiver_scale;
+  if (!row.upsampling.empty()) text << ' ' << row.upsampling;
+  if (!row.indirect.empty()) text << ' ' << row.indirect;
+  return text.str();
+}
+
+std::string row_key(const ChartRow& row) { return row.scene + '|' + row_label(row); }
+
+void mark_pareto_fronts(std::vector<ChartRow>& rows) {
+  for (ChartRow& row : rows) {
+    row.pareto = true;
+    for (const ChartRow& other : rows) {
+      if (&other == &row || other.scene != row.scene) continue;
+      const bool no_worse = other.milliseconds <= row.milliseconds && other.relative_mse <= row.relative_mse;
+      const bool better = other.milliseconds < row.milliseconds || other.relative_mse < row.relative_mse;
+      if (no_worse && better) {
+        row.pareto = false;
+        break;
+      }
+    }
+  }
+}
+
+std::vector<ChartRow> mean_over_scenes(const std::vector<ChartRow>& rows) {
+  std::set<std::string> scenes;
+  for (const ChartRow& row : rows)
+    if (row.scene != kAllScenes) scenes.insert(row.scene);
+  std::map<std::string, std::vector<const ChartRow*>> by_setting;  // label -> rows over scenes
+  std::vector<std::string> order;
+  for (const ChartRow& row : rows) {
+    if (row.scene == kAllScenes) continue;
+    const std::string label = row_label(row);
+    if (!by_setting.count(label)) order.push_back(label);
+    by_setting[label].push_back(&row);
+  }
+  std::vector<ChartRow> means;
+  for (const std::string& label : order) {
+    const std::vector<const ChartRow*>& group = by_setting[label];
+    std::set<std::string> covered;
+    for (const ChartRow* row : group) covered.insert(row->scene);
+    if (covered != scenes || group.size() != scenes.size()) continue;
+    ChartRow mean = *group.front();
+    mean.scene = kAllScenes;
+    mean.milliseconds = mean.relative_mse = mean.rmse = mean.ssim = mean.flip = 0.0;
+    for (const ChartRow* row : group) {
+      mean.milliseconds += row->milliseconds;
+      mean.relative_mse += row->relative_mse;
+      mean.rmse += row->rmse;
+      mean.ssim += row->ssim;
+      mean.flip += row->flip;
+    }
+    const double count = double(group.size());
+    mean.milliseconds /= count;
+    mean.relative_mse /= count;
+    mean.rmse /= count;
+    mean.ssim /= count;
+    mean.flip /= count;
+    mean.pareto = false;
+    means.push_back(mean);
+  }
+  return means;
+}
+
+namespace {
+
+std::string format_note(const char* format, double a, double b, double c) {
+  char text[256];
+  std::snprintf(text, sizeof text, format, a, b, c);
+  return text;
+}
+
+}  // namespace
+
+GoalResult path_tracing_goal(const std::vector<ChartRow>& rows, const std::string& scene) {
+  GoalResult goal;
+  const ChartRow* proxy = nullptr;
+  std::vector<const ChartRow*> guided;
+  for (const ChartRow& row : rows) {
+    if (row.scene != scene) continue;
+    if (row.is_default && row.method == "proxy") proxy = &row;
+    if (row.method == "path+guided") guided.push_back(&row);
+  }
+  if (proxy == nullptr || guided.empty() || proxy->milliseconds <= 0.0) return goal;
+  goal.evaluated = true;
+  const ChartRow* best = nullptr;
+  for (const ChartRow* row : guided)
+    if (row->relative_mse >= proxy->relative_mse && (best == nullptr || row->milliseconds > best->milliseconds))
+      best = row;
+  if (best != nullptr) {
+    goal.ratio = best->milliseconds / proxy->milliseconds;
+    goal.met = goal.ratio >= 50.0;
+    goal.compared = row_label(*best);
+    goal.note = format_note("default proxy setting: relative MSE %.4g at %.3g ms; matched error at %.3gx less time",
+                            proxy->relative_mse, proxy->milliseconds, goal.ratio);
+    return goal;
+  }
+  const ChartRow* cheapest = *std::min_element(guided.begin(), guided.end(), [](const ChartRow* a, const ChartRow* b) {
+    return a->milliseconds < b->milliseconds;
+  });
+  goal.ratio = cheapest->milliseconds / proxy->milliseconds;
+  goal.compared = row_label(*cheapest);
+  goal.note = format_note("every guided path-tracing row beats the default proxy setting's relative MSE %.4g; "
+                          "the cheapest (%.3g ms) is %.3gx slower",
+                          proxy->relative_mse, cheapest->milliseconds, goal.ratio);
+  return goal;
+}
+
+GoalResult vertex_goal(const std::vector<ChartRow>& rows, const std::string& scene, int sh_order) {
+  GoalResult goal;
+  const ChartRow* vertex = nullptr;
+  for (const ChartRow& row : rows)
+    if (row.scene == scene && row.method == "vertex" && row.sh_order == sh_order) vertex = &row;
+  if (vertex == nullptr) return goal;
+  const ChartRow* fastest = nullptr;
+  for (const ChartRow& row : rows)
+    if (row.scene == scene && row.method == "proxy" && row.sh_order == vertex->sh_order &&
+        row.relative_mse <= vertex->relative_mse && (fastest == nullptr || row.milliseconds < fastest->milliseconds))
+      fastest = &row;
+  goal.evaluated = true;
+  if (fastest == nullptr || fastest->milliseconds <= 0.0) {
+    goal.note = format_note("no image-space row at order %.0f reaches the vertex baseline's relative MSE %.4g (%.3g ms)",
+                            vertex->sh_order, vertex->relative_mse, vertex->milliseconds);
+    return goal;
+  }
+  goal.ratio = vertex->milliseconds / fastest->milliseconds;
+  goal.met = goal.ratio >= 2.0;
+  goal.compared = row_label(*fastest);
+  goal.note = format_note("vertex baseline %.3g ms at relative MSE %.4g; the fastest image-space row at equal or "
+                          "lower error is %.3gx faster",
+                          vertex->milliseconds, vertex->relative_mse, goal.ratio);
+  return goal;
+}
+
+std::string to_csv(const std::vector<ChartRow>& rows) {
+  std::ostringstream csv;
+  csv << "scene,method,label,sh_order,receiver_scale,upsampling,indirect,samples,ms_per_frame,relative_mse,rmse,ssim,"
+         "flip,pareto,default\n";
+  csv.precision(6);
+  for (const ChartRow& row : rows)
+    csv << row.scene << ',' << row.method << ',' << row_label(row) << ',' << row.sh_order << ',' << row.receiver_scale
+        << ',' << row.upsampling << ',' << row.indirect << ',' << row.samples << ',' << row.milliseconds << ','
+        << row.relative_mse << ',' << row.rmse << ',' << row.ssim << ',' << row.flip << ',' << int(row.pareto) << ','
+        << int(row.is_default) << '\n';
+  return csv.str();
+}
+
+std::string to_markdown(const std::vector<ChartRow>& rows, const std::string& scene) {
+  std::vector<const ChartRow*> selected;
+  for (const ChartRow& row : rows)
+    if (row.scene == scene) selected.push_back(&row);
+  std::stable_sort(selected.begin(), selected.end(), [](const ChartRow* a, const ChartRow* b) {
+    if (a->pareto != b->pareto) return a->pareto;
+    return a->milliseconds < b->milliseconds;
+  });
+  std::ostringstream text;
+  text << "| method | ms/frame | relative MSE | RMSE | SSIM | HDR-FLIP | Pareto |\n";
+  text << "|---|---:|---:|---:|---:|---:|:---:|\n";
+  char line[320];
+  for (const ChartRow* row : selected) {
+    std::string label = row_label(*row);
+    if (row->is_default) label += " (default)";
+    std::snprintf(line, sizeof line, "| %s | %.2f | %.4g | %.4g | %.4f | %.4f | %s |\n", label.c_str(), row->milliseconds,
+                  row->relative_mse, row->rmse, row->ssim, row->flip, row->pareto ? "yes" : "");
+    text << line;
+  }
+  return text.str();
+}
+
+std::string to_json(const std::vector<ChartRow>& rows) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const ChartRow& row : rows)
+    out.push_back({{"scene", row.scene},
+                   {"method", row.method},
+                   {"label", row_label(row)},
+                   {"sh_order", row.sh_order},
+                   {"receiver_scale", row.receiver_scale},
+                   {"upsampling", row.upsampling},
+                   {"indirect", row.indirect},
+                   {"samples", row.samples},
+                   {"ms_per_frame", row.milliseconds},
+                   {"relative_mse", row.relative_mse},
+                   {"rmse", row.rmse},
+                   {"ssim", row.ssim},
+                   {"flip", row.flip},
+                   {"pareto", row.pareto},
+                   {"default", row.is_default}});
+  return out.dump(2);
+}
+
+}  // namespace proxygi::study

@@ -1,0 +1,68 @@
+#pragma once
+// Rows of the speed–accuracy chart (`proxygi bench chart`) and what is derived from them: the
+// Pareto front per scene, the mean over scenes, the two goals, and the CSV, JSON and
+// markdown tables. Pure data, no rendering: tests build rows by hand.
+//
+// A row is one method at one setting on one scene, averaged over the chart's frames:
+// milliseconds per frame (lower is better) against the error of its image to the converged
+// reference (relative MSE over receiver pixels; lower is better). RMSE, SSIM and HDR-FLIP are
+// carried along for the table.
+#include <string>
+#include <vector>
+
+namespace proxygi::study {
+
+inline constexpr const char* kAllScenes = "all";  // the scene name of rows averaged over scenes
+
+struct ChartRow {
+  std::string scene;
+  std::string method;     // "proxy", "vertex", "ao", "path", "path+guided"
+  int sh_order = 0;       // proxy methods: SH order; path tracing: 0
+  int receiver_scale = 0; // proxy/ao: k; vertex: 0
+  std::string upsampling; // "bilateral" / "bilinear"; empty where it does not apply
+  std::string indirect;   // "point" / "averaged" / "exact"; empty where it does not apply
+  int samples = 0;        // path tracing: samples per pixel; else 0
+  double milliseconds = 0.0;  // per frame
+  double relative_mse = 0.0;
+  double rmse = 0.0;
+  double ssim = 0.0;
+  double flip = 0.0;      // HDR-FLIP mean
+  bool pareto = false;    // on its scene's Pareto front (set by mark_pareto_fronts)
+  bool is_default = false;  // the proxy method at the product's default setting (method "proxy" only)
+};
+
+// "proxy n4 k4 bilateral averaged", "path+guided 64 spp", ...
+std::string row_label(const ChartRow& row);
+// Rows with the same method and setting on the same scene: the key averaged over frames.
+std::string row_key(const ChartRow& row);
+
+// Marks, within each scene separately, the rows no other row beats in both milliseconds and
+// relative MSE (ties in both keep both). Resets `pareto` first.
+void mark_pareto_fronts(std::vector<ChartRow>& rows);
+
+// One row per (method, setting) present on every scene: arithmetic means of time and errors over
+// the scenes, scene = kAllScenes. Settings missing on some scene are skipped.
+std::vector<ChartRow> mean_over_scenes(const std::vector<ChartRow>& rows);
+
+// The goals, evaluated on one scene's rows (normally kAllScenes).
+struct GoalResult {
+  bool evaluated = false;  // the rows needed were present
+  bool met = false;
+  double ratio = 0.0;      // speed ratio achieved (how many times faster)
+  std::string compared;    // the row compared against, as row_label
+  std::string note;        // one sentence of what was found
+};
+// 50×: the default proxy row reaches the error of the guided path tracer at some sample count
+// (a guided row with relative MSE ≥ the default's) in ≥ 50× less time. Ratio = the best such
+// time ratio; when no guided row is as bad as the default, the goal is not met and the ratio is
+// the one against the cheapest guided row.
+GoalResult path_tracing_goal(const std::vector<ChartRow>& rows, const std::string& scene);
+// 2×: the fastest image-space (proxy) row at SH order `sh_order` with relative MSE ≤ the vertex
+// baseline's at that order runs ≥ 2× faster than it.
+GoalResult vertex_goal(const std::vector<ChartRow>& rows, const std::string& scene, int sh_order);
+
+std::string to_csv(const std::vector<ChartRow>& rows);
+std::string to_markdown(const std::vector<ChartRow>& rows, const std::string& scene);
+std::string to_json(const std::vector<ChartRow>& rows);  // array of objects, one per row
+
+}  // namespace proxygi::study

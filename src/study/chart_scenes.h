@@ -1,0 +1,44 @@
+#pragma once
+// The scenes of the speed–accuracy chart: the built-in default scene and one scene per shared
+// sample character (CesiumMan, Fox, RiggedSimple from ../shared/assets/gltf).
+//
+// A character scene is the default scene's stage (ground, sky and sun) with that character
+// walking in place at the origin, uniformly scaled so its largest bind-pose extent is 1.7 m,
+// feet on the ground (the lowest point of its first frame at y = 0), and a fixed camera at
+// (1.6, 1.5, 3.4) m looking at (0, 0.6, 0) so the character and its shadow fill the frame. Its
+// proxy rig is cached under `rig_cache_dir` (never next to the shared model).
+//
+// All chart scenes render SH order `reference_order` lighting in the reference (the highest
+// order the proxy method offers); each proxy setting overrides render.sh_order itself.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "base/result.h"
+#include "scene/scene.h"
+
+namespace proxygi::study {
+
+struct ChartScene {
+  std::string name;              // "default", "CesiumMan", "Fox", "RiggedSimple"
+  scene::Scene scene;            // output size set to the chart's
+  std::vector<int> frames;       // the frames of motion the chart averages over
+};
+
+struct ChartSceneOptions {
+  int size = 192;                     // square output, pixels
+  int frame_count = 2;                // frames of motion per scene, spread over its clip
+  std::filesystem::path shared_dir;   // folder holding assets/gltf; empty: characters skipped
+  std::filesystem::path assets_dir;   // the project's assets/ (the mannequin)
+  std::filesystem::path rig_cache_dir;
+  std::vector<std::string> only;      // when not empty: keep only these scene names
+};
+
+// `frame_count` frames spread evenly inside [first, first + count): first + (i + 1) count / (n + 1).
+std::vector<int> spread_frames(int first, int count, int frame_count);
+
+// The chart's scenes; fails when a shared character cannot be imported. Characters whose file
+// is missing are skipped with a warning (so the chart runs without ../shared).
+Result<std::vector<ChartScene>> chart_scenes(const ChartSceneOptions& options);
+
+}  // namespace proxygi::study

@@ -1,0 +1,211 @@
+#include "study/reference_study.h"
+
+#include <chrono>
+#include <cstdio>
+#include <sstream>
+
+#include "ref/embree_scene.h"
+#include "ref/embree_scene_load.h"
+#include "ref/flip.h"
+#include "ref/path_tracer.h"
+#include "ref/reference_render_io.h"
+#include "ref/ssim.h"
+#include "scene/camera.h"
+
+namespace proxygi::study {
+
+struct FrameTracer::State {
+  scene::Scene scene;
+  std::unique_ptr<ref::EmbreeScene> geometry;
+  std::unique_ptr<ref::EnvironmentLight> lighting;
+  std::unique_ptr<ref::EnvironmentLight> background;
+  std::unique_ptr<ref::PathTracer> tracer;
+  scene::CameraState camera;
+};
+
+FrameTracer::FrameTracer(std::unique_ptr<State> state) : state_(std::move(state)) {}
+FrameTracer::~FrameTracer() = default;
+int FrameTracer::width() const { return state_->scene.output.width; }
+int FrameTracer::height() const { return state_->scene.output.height; }
+
+Result<std::unique_ptr<FrameTracer>> FrameTracer::create(const ChartScene& chart, int frame,
+                                                         const ReferenceOptions& options) {
+  auto state = std::make_unique<State>();
+  state->scene = chart.scene;
+  state->scene.render.sh_order = options.reference_order;
+  const double time_s = scene::frame_time_s(state->scene.output, frame);
+  auto assets = ref::load_scene_assets(state->scene, options.assets_dir);
+  if (!assets) return assets.error();
+  auto meshes = ref::pose_scene_meshes(state->scene, *assets, time_s);
+  if (!meshes) return meshes.error();
+  auto geometry = ref::EmbreeScene::build(std::move(*meshes));
+  if (!geometry) return geometry.error();
+  state->geometry = std::make_unique<ref::EmbreeScene>(std::move(*geometry));
+  auto lighting = ref::EnvironmentLight::from_scene(state->scene, options.lighting);
+  if (!lighting) return lighting.error();
+  state->lighting = std::make_unique<ref::EnvironmentLight>(std::move(*lighting));
+  auto background = ref::EnvironmentLight::from_scene(state->scene, ref::LightingKind::full);
+  if (!background) return background.error();
+  state->background = std::make_unique<ref::EnvironmentLight>(std::move(*background));
+  ref::PathTracerSettings settings;
+  settings.transport = ref::LightTransport::one_bounce;
+  state->tracer = std::make_unique<ref::PathTracer>(*state->geometry, *state->lighting, *state->background, settings);
+  state->camera = scene::evaluate_scene_camera(state->scene, time_s);
+  return std::unique_ptr<FrameTracer>(new FrameTracer(std::move(state)));
+}
+
+Result<ref::SampleSums> FrameTracer::trace(int spp, std::uint32_t seed, std::uint32_t first_sample,
+                                           ref::RenderStats* stats, bool progress) const {
+  ref::RenderJob job;
+  job.width = width();
+  job.height = height();
+  job.spp = spp;
+  job.seed = seed;
+  job.first_sample = first_sample;
+  ref::ProgressCallback report;
+  if (progress)
+    report = [](const ref::RenderProgress& p) {
+      std::fprintf(stderr, "\r  reference %5.1f%%  %.0f s elapsed, ETA %.0f s   ", 100.0 * p.tiles_done / std::max(p.tiles_total, 1),
+                   p.elapsed_s, p.eta_s);
+      std::fflush(stderr);
+    };
+  auto sums = ref::render_samples(*state_->tracer, state_->camera, job, stats, report);
+  if (progress) std::fprintf(stderr, "\n");
+  return sums;
+}
+
+ref::PixelFeatures FrameTracer::features() const {
+  return ref::render_features(*state_->geometry, state_->camera, width(), height());
+}
+
+namespace {
+
+std::filesystem::path reference_file(const ChartScene& chart, int frame, const ReferenceOptions& options) {
+  // A stream, not operator+ chains: GCC 12 warns falsely (-Wrestrict) on those at -O3.
+  std::ostringstream name;
+  name << "frame" << frame << '-';
+  if (options.lighting == ref::LightingKind::sh)
+    name << "sh-n" << options.reference_order;
+  else
+    name << "full";
+  name << '-' << chart.scene.output.width << 'x' << chart.scene.output.height << ".exr";
+  return options.cache_dir / chart.name / name.str();
+}
+
+}  // namespace
+
+Result<FrameReference> load_or_render_reference(const ChartScene& chart, int frame, const FrameTracer& tracer,
+                                                const ReferenceOptions& options) {
+  const ref::ReferencePaths paths = ref::reference_paths(reference_file(chart, frame, options));
+  ref::ReferenceRecord record;
+  record.scene = chart.name;
+  record.frame = frame;
+  record.time_s = scene::frame_time_s(chart.scene.output, frame);
+  record.width = tracer.width();
+  record.height = tracer.height();
+  record.transport = "one-bounce";
+  record.lighting = options.lighting == ref::LightingKind::sh ? "sh" : "full";
+  record.sh_order = options.reference_order;
+  record.seed = kReferenceSeed;
+
+  std::optional<ref::SampleSums> sums;
+  std::error_code error;
+  if (std::filesystem::exists(paths.record, error)) {
+    auto old = ref::read_record(paths.record);
+    if (old && ref::record_mismatch(*old, record).empty()) {
+      auto previous = ref::read_previous_sums(paths, *old);
+      if (previous) {
+        sums = std::move(*previous);
+        record.samples = old->samples;
+        record.seconds = old->seconds;
+        record.rays = old->rays;
+      }
+    }
+  }
+  const int missing = options.reference_spp - int(record.samples);
+  if (missing > 0) {
+    std::fprintf(stderr, "bench chart: reference %s frame %d, %d spp at %dx%d\n", chart.name.c_str(), frame, missing,
+                 record.width, record.height);
+    ref::RenderStats stats;
+    auto traced = tracer.trace(missing, kReferenceSeed, record.samples, &stats, options.progress);
+    if (!traced) return traced.error();
+    if (sums) {
+      if (Status merged = sums->merge(*traced); !merged) return merged.error();
+    } else {
+      sums = std::move(*traced);
+    }
+    record.samples = sums->samples;
+    record.seconds += stats.seconds;
+    record.rays += stats.rays;
+  }
+  FrameReference reference;
+  const ref::ReferenceImages images = ref::to_images(*sums);
+  reference.features = tracer.features();
+  if (missing > 0) {
+    std::filesystem::create_directories(paths.radiance.parent_path(), error);
+    if (error) return make_error(paths.radiance.parent_path().string() + ": cannot create: " + error.message());
+    if (Status written = ref::write_reference(paths, images, reference.features, record, nullptr); !written)
+      return written.error();
+  }
+  reference.radiance = images.radiance;
+  reference.receivers = ref::mask_from_image(reference.features.mask);
+  reference.samples = record.samples;
+  reference.trace_seconds = record.seconds;
+  return reference;
+}
+
+Result<ImageScores> score_image(const image::ImageF& test, const FrameReference& reference) {
+  ImageScores scores;
+  auto relative = ref::relative_mse(test, reference.radiance, &reference.receivers);
+  if (!relative) return relative.error();
+  scores.relative_mse = relative->mean;
+  auto rmse = ref::rmse(test, reference.radiance, &reference.receivers);
+  if (!rmse) return rmse.error();
+  scores.rmse = rmse->mean;
+  auto ssim = ref::ssim(test, reference.radiance, &reference.receivers);
+  if (!ssim) return ssim.error();
+  scores.ssim = ssim->mean;
+  auto flip = ref::flip_hdr(test, reference.radiance, &reference.receivers);
+  if (!flip) return flip.error();
+  scores.flip = flip->flip.mean;
+  return scores;
+}
+
+Result<std::vector<PathTracingScore>> score_path_tracing(const FrameTracer& tracer, const FrameReference& reference,
+                                                         const std::vector<int>& sample_counts,
+                                                         const ReferenceOptions& options) {
+  std::vector<PathTracingScore> scores;
+  for (int spp : sample_counts) {
+    ref::RenderStats stats;
+    auto sums = tracer.trace(spp, kTestSeed, 0, &stats, false);
+    if (!sums) return sums.error();
+    const ref::ReferenceImages images = ref::to_images(*sums);
+    PathTracingScore plain;
+    plain.samples = spp;
+    plain.milliseconds = stats.seconds * 1e3;
+    auto plain_scores = score_image(images.radiance, reference);
+    if (!plain_scores) return plain_scores.error();
+    plain.scores = *plain_scores;
+    scores.push_back(plain);
+
+    const auto start = std::chrono::steady_clock::now();
+    const ref::PixelFeatures features = tracer.features();
+    ref::GuidedFilterSettings filter;
+    filter.radius = options.guided_radius;
+    filter.depth_scale = options.guided_depth_scale;
+    auto filtered = ref::guided_filter_reference(images, features, filter);
+    if (!filtered) return filtered.error();
+    PathTracingScore guided;
+    guided.samples = spp;
+    guided.guided = true;
+    guided.milliseconds =
+        plain.milliseconds + std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    auto guided_scores = score_image(*filtered, reference);
+    if (!guided_scores) return guided_scores.error();
+    guided.scores = *guided_scores;
+    scores.push_back(guided);
+  }
+  return scores;
+}
+
+}  // namespace proxygi::study

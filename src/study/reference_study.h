@@ -1,0 +1,91 @@
+#pragma once
+// The ground-truth side of the speed–accuracy chart: converged references (cached on disk),
+// image scores against them, and path tracing at low sample counts with and without the guided
+// filter, timed on this machine.
+//
+// Reference: `proxygi reference`'s path tracer, one diffuse bounce, lighting = the environment
+// band-limited to SH order `reference_order` (LightingKind::sh) or the full environment, at
+// `reference_spp` samples with seed kReferenceSeed. Cached as
+//   cache_dir/<scene>/frame<F>-<lighting>[-n<order>]-<W>x<H>.exr (+ its record and features),
+// reused when the record matches and holds at least `reference_spp` samples, continued
+// (exact accumulation) when it holds fewer.
+// Scores: relative MSE, RMSE, SSIM and HDR-FLIP over receiver pixels (the reference's primary-ray
+// coverage; the environment behind is not scored), ref/metrics.h conventions.
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include "base/result.h"
+#include "image/image.h"
+#include "ref/metrics.h"
+#include "ref/path_tracer_lighting.h"
+#include "ref/reference_render.h"
+#include "study/chart_scenes.h"
+
+namespace proxygi::study {
+
+inline constexpr std::uint32_t kReferenceSeed = 1;
+inline constexpr std::uint32_t kTestSeed = 977;  // path-tracing rows: independent of the reference
+
+struct ReferenceOptions {
+  int reference_spp = 1024;
+  int reference_order = 6;
+  ref::LightingKind lighting = ref::LightingKind::sh;
+  std::filesystem::path cache_dir;
+  std::filesystem::path assets_dir;
+  int guided_radius = 8;            // pixels (Bauszat: 24–32 at 512², scaled to the chart size)
+  float guided_depth_scale = 20.0f; // meters: the character stage's extent
+  bool progress = true;             // progress line on stderr while tracing
+};
+
+struct FrameReference {
+  image::ImageF radiance;      // linear, mean of all samples
+  ref::PixelFeatures features; // pixel-center features (guide of the filter)
+  ref::ReceiverMask receivers; // pixels the center ray hits
+  std::uint32_t samples = 0;
+  double trace_seconds = 0.0;  // all runs together
+};
+
+struct ImageScores {
+  double relative_mse = 0.0;
+  double rmse = 0.0;
+  double ssim = 0.0;
+  double flip = 0.0;  // HDR-FLIP
+};
+
+// The path tracer set up for one frame of a chart scene (geometry posed at the frame's time).
+class FrameTracer {
+ public:
+  static Result<std::unique_ptr<FrameTracer>> create(const ChartScene& chart, int frame, const ReferenceOptions& options);
+  ~FrameTracer();
+  // Traces `spp` samples with `seed` from sample 0 (all cores); seconds = tracing wall time.
+  Result<ref::SampleSums> trace(int spp, std::uint32_t seed, std::uint32_t first_sample, ref::RenderStats* stats,
+                                bool progress) const;
+  ref::PixelFeatures features() const;
+  int width() const;
+  int height() const;
+
+ private:
+  struct State;
+  explicit FrameTracer(std::unique_ptr<State> state);
+  std::unique_ptr<State> state_;
+};
+
+Result<FrameReference> load_or_render_reference(const ChartScene& chart, int frame, const FrameTracer& tracer,
+                                                const ReferenceOptions& options);
+
+Result<ImageScores> score_image(const image::ImageF& test, const FrameReference& reference);
+
+struct PathTracingScore {
+  int samples = 0;
+  bool guided = false;
+  double milliseconds = 0.0;  // tracing (+ features and filter when guided), wall time, all cores
+  ImageScores scores;
+};
+// Path tracing at each sample count in `sample_counts`, plain and guided-filtered.
+Result<std::vector<PathTracingScore>> score_path_tracing(const FrameTracer& tracer, const FrameReference& reference,
+                                                         const std::vector<int>& sample_counts,
+                                                         const ReferenceOptions& options);
+
+}  // namespace proxygi::study
