@@ -60,7 +60,7 @@ EnvironmentLight EnvironmentLight::spherical_harmonics(const sh::RgbSh& lighting
   for (int y = 0; y < kHeight; ++y)
     for (int x = 0; x < kWidth; ++x) {
       const glm::vec3 d = scene::equirect_direction({(x + 0.5f) / float(kWidth), (y + 0.5f) / float(kHeight)});
-      weights[std::size_t(y) * kWidth + std::size_t(x)] = channel_mean(light.radiance_without_sun(d));
+      weights[std::size_t(y) * kWidth + std::size_t(x)] = std::abs(channel_mean(light.radiance_without_sun(d)));
     }
   light.sampler_ = EquirectSampler(kWidth, kHeight, weights);
   return light;
@@ -101,7 +101,7 @@ glm::vec3 EnvironmentLight::radiance_without_sun(const glm::vec3& direction) con
         const std::vector<float>& coefficients = sh_coefficients_[std::size_t(c)];
         float sum = 0.0f;
         for (int i = 0; i < count; ++i) sum += coefficients[std::size_t(i)] * basis[i];
-        out[c] = std::max(sum, 0.0f);  // band-limited lighting rings below zero; light is never negative
+        out[c] = sum;  // signed, as the proxy method sees it (header)
       }
       return out;
     }

@@ -9,11 +9,14 @@
 //    "sun" (uniform radiance sun_radiance inside the cone dot(d, sun_direction) >= sun_cos_radius).
 //  - map (full): the equirectangular image × intensity, looked up at the nearest texel of
 //    equirect_uv(world_to_environment · d) (the lookup of the rasterizer's background).
-//  - sh (band-limited, the proxy method's lighting): radiance(d) = max(0, sum_lm L_lm y_lm(d)) per
-//    channel, L the scene's environment projected to order scene.render.sh_order by
+//  - sh (band-limited, the proxy method's lighting): radiance(d) = sum_lm L_lm y_lm(d) per
+//    channel, signed: the band-limited lighting rings below zero and the proxy method integrates
+//    it unclamped; clamping here made the default scene's open ground 5–21% brighter (blue to
+//    red) at order 6 than the proxy method shows, an error of the comparison, not of visibility.
+//    L is the scene's environment projected to order scene.render.sh_order by
 //    render::make_environment_lighting and windowed with sh::apply_ringing_window(order) exactly
 //    as render::make_frame_tables does. No sun term: the disc is inside the projection.
-// sh and map carry an EquirectSampler (a 128 x 64 table of the SH radiance, or the map itself)
+// sh and map carry an EquirectSampler (a 128 x 64 table of |SH radiance|, or the map itself)
 // for next-event estimation, MIS-combined with BSDF sampling like the sun.
 #include <array>
 #include <optional>
