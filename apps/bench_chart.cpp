@@ -126,6 +126,11 @@ int run_bench_chart(const ChartArgs& args) {
     rows.insert(rows.begin(), means.begin(), means.end());
   }
   study::mark_pareto_fronts(rows);
+  // With PROXYGI_VALIDATION=1 (the tests) any validation message fails the run.
+  if (const std::vector<std::string> messages = context->validation_messages(); !messages.empty()) {
+    for (const std::string& message : messages) std::fprintf(stderr, "validation: %s\n", message.c_str());
+    return fail_runtime("bench chart: " + std::to_string(messages.size()) + " Vulkan validation messages");
+  }
 
   ChartReportContext report;
   report.device = context->report().name;
