@@ -68,9 +68,14 @@ for index, scene in enumerate(scenes):
     front = sorted([r for r in mine if r["pareto"]], key=lambda r: r["ms_per_frame"])
     ax.plot([r["ms_per_frame"] for r in front], [r["relative_mse"] for r in front], color="black", lw=0.8,
             label="Pareto front")
-    for r in front:
-        ax.annotate(r["label"], (r["ms_per_frame"], r["relative_mse"]), fontsize=6, xytext=(3, 3),
+    # Front members are numbered on the plot and named in a box (labels would overlap).
+    names = []
+    for number, r in enumerate(front, start=1):
+        ax.annotate(str(number), (r["ms_per_frame"], r["relative_mse"]), fontsize=6, xytext=(2, -8),
                     textcoords="offset points")
+        names.append(f'{number}: {r["label"]}')
+    ax.text(0.99, 0.99, "Pareto front\n" + "\n".join(names), transform=ax.transAxes, fontsize=5.5,
+            va="top", ha="right", family="monospace", bbox=dict(facecolor="white", alpha=0.85, lw=0.3))
     for r in mine:
         if r["default"] and r["method"] == "proxy":
             ax.scatter([r["ms_per_frame"]], [r["relative_mse"]], facecolors="none", edgecolors="black", s=90,
@@ -82,7 +87,7 @@ for index, scene in enumerate(scenes):
     ax.set_title("mean over scenes" if scene == "all" else scene, fontsize=10)
     ax.grid(True, which="both", alpha=0.25)
     if index == 0:
-        ax.legend(fontsize=7)
+        ax.legend(fontsize=7, loc="upper left")
 for index in range(len(scenes), lines * columns):
     axes[index // columns][index % columns].axis("off")
 fig.suptitle(data["machine"], fontsize=7, wrap=True)
