@@ -119,6 +119,10 @@ nlohmann::json chart_report_json(const std::vector<study::ChartRow>& rows, const
   out["goals"]["scene"] = summary;
   out["goals"]["path_tracing_50x"] = goal_json(study::path_tracing_goal(rows, summary));
   out["goals"]["vertex_2x"] = goal_json(study::vertex_goal(rows, summary, scene::RenderSettings{}.sh_order));
+  for (const std::string& scene : context.scenes)
+    out["goals_per_scene"][scene] = {
+        {"path_tracing_50x", goal_json(study::path_tracing_goal(rows, scene))},
+        {"vertex_2x", goal_json(study::vertex_goal(rows, scene, scene::RenderSettings{}.sh_order))}};
   return out;
 }
 
@@ -143,8 +147,12 @@ Status write_chart_report(const std::string& folder, const std::vector<study::Ch
 
   std::ostringstream markdown;
   markdown << "# Speed–accuracy chart (`proxygi bench chart`)\n\n" << chart_summary_text(rows, context);
+  const int order = scene::RenderSettings{}.sh_order;
   for (const std::string& scene : context.scenes)
-    markdown << "\n## " << scene << "\n\n" << study::to_markdown(rows, scene);
+    markdown << "\n## " << scene << "\n\n"
+             << goal_line("50x", study::path_tracing_goal(rows, scene))
+             << goal_line("2x", study::vertex_goal(rows, scene, order)) << "\n"
+             << study::to_markdown(rows, scene);
   if (Status s = write_file_atomically(base.string() + ".md", markdown.str()); !s) return s;
   return draw_matplotlib_chart(kChartScript, chart_report_json(rows, context), base.string() + ".png");
 }

@@ -17,38 +17,15 @@ namespace {
 using BaselineTest = testing::GpuTest;
 constexpr float kPi = 3.14159265358979f;
 
-struct Rendered {
-  std::unique_ptr<SoftGiFrame> frame;
-  render::FrameTables tables;
-};
-
 // The fixture scene (white sky, camera looking down at the origin) drawn from `ground`.
-Rendered render_frame(Context& context, ShadingMethod method, std::uint32_t size, std::uint32_t scale,
-                      const render::GroundGrid& ground, const std::vector<render::Sphere>& spheres, int order = 4) {
-  Rendered out;
-  render::FrameTableSettings table_settings;
-  table_settings.order = order;
-  out.tables = render::make_frame_tables(testing::constant_sky_sh(order, 1.0), table_settings);
-  auto mesh =
-      upload_static_mesh(context, ground.positions, ground.normals, ground.indices, glm::vec4(0.8f, 0.8f, 0.8f, 1));
-  EXPECT_TRUE(mesh.ok());
-  if (!mesh.ok()) return out;
-  const DrawItem draws[] = {mesh->draw()};
+testing::RenderedFrame render_frame(Context& context, ShadingMethod method, std::uint32_t size, std::uint32_t scale,
+                                    const render::GroundGrid& ground, const std::vector<render::Sphere>& spheres,
+                                    int order = 4) {
   FrameSettings settings;
   settings.method = method;
   settings.width = settings.height = size;
   settings.receiver_scale = scale;
-  settings.frames_in_flight = 1;
-  settings.vertex_receivers = vertex_receiver_count(draws);
-  image::ImageF sky(8, 4, glm::vec4(1.0f));
-  auto frame = SoftGiFrame::create(context, settings, out.tables, sky);
-  EXPECT_TRUE(frame.ok()) << (frame.ok() ? "" : frame.message());
-  if (!frame.ok()) return out;
-  out.frame = std::move(*frame);
-  const FrameView view = testing::look_at({0.0f, 4.0f, 3.0f}, {0.0f, 0.0f, 0.0f}, 60.0f, 1.0f);
-  EXPECT_TRUE(out.frame->write_slot(0, view, spheres).ok());
-  EXPECT_TRUE(context.submit_and_wait([&](VkCommandBuffer commands) { out.frame->record(commands, 0, draws); }).ok());
-  return out;
+  return testing::render_fixture_frame(context, settings, testing::constant_sky_sh(order, 1.0), order, ground, spheres);
 }
 
 render::GroundGrid grid(float half_fine, float per_metre) {

@@ -11,39 +11,20 @@ namespace proxygi::gpu {
 namespace {
 
 using testing::GpuTest;
+using testing::RenderedFrame;
 using FrameTest = GpuTest;
 constexpr float kPi = 3.14159265358979f;
 
-struct RenderedFrame {
-  std::unique_ptr<SoftGiFrame> frame;
-  render::FrameTables tables;
-};
 
 RenderedFrame render_sphere_over_plane(Context& context, int order, std::uint32_t size, std::uint32_t scale,
                                        const std::vector<render::Sphere>& spheres,
                                        const glm::vec3& eye = {0.0f, 4.0f, 3.0f}, bool optimal_linear_only = false) {
-  RenderedFrame out;
-  render::FrameTableSettings table_settings;
-  table_settings.order = order;
-  out.tables = render::make_frame_tables(testing::constant_sky_sh(order, 1.0), table_settings);
   FrameSettings settings;
   settings.width = settings.height = size;
   settings.receiver_scale = scale;
-  settings.frames_in_flight = 1;
   settings.optimal_linear_only = optimal_linear_only;
-  image::ImageF sky(8, 4, glm::vec4(1.0f));
-  auto frame = SoftGiFrame::create(context, settings, out.tables, sky);
-  EXPECT_TRUE(frame.ok()) << (frame.ok() ? "" : frame.message());
-  if (!frame.ok()) return out;
-  out.frame = std::move(*frame);
-  const auto ground = testing::ground_plane(20.0f, 4);
-  auto mesh = upload_static_mesh(context, ground.positions, ground.normals, ground.indices, glm::vec4(0.8f, 0.8f, 0.8f, 1));
-  EXPECT_TRUE(mesh.ok());
-  const FrameView view = testing::look_at(eye, {0.0f, 0.0f, 0.0f}, 60.0f, 1.0f);
-  EXPECT_TRUE(out.frame->write_slot(0, view, spheres).ok());
-  const DrawItem draws[] = {mesh->draw()};
-  EXPECT_TRUE(context.submit_and_wait([&](VkCommandBuffer commands) { out.frame->record(commands, 0, draws); }).ok());
-  return out;
+  return testing::render_fixture_frame(context, settings, testing::constant_sky_sh(order, 1.0), order,
+                                       testing::ground_plane(20.0f, 4), spheres, eye);
 }
 
 float relative_error(const glm::vec3& gpu, const glm::vec3& cpu) {

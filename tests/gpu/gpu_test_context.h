@@ -3,10 +3,15 @@
 // layer forced on. Every test ends by asserting that no validation message appeared during it.
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <memory>
 #include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
 
 #include "gpu/context.h"
+#include "gpu/transfer.h"
 
 namespace proxygi::gpu::testing {
 
@@ -46,5 +51,14 @@ class GpuTest : public ::testing::Test {
   }
   std::size_t messages_before_ = 0;
 };
+
+// The first `count` vec4s of a device buffer (zeros, and a test failure, when the read fails).
+inline std::vector<glm::vec4> read_vec4s(Context& context, const Buffer& buffer, std::size_t count) {
+  auto bytes = readback(context, buffer);
+  EXPECT_TRUE(bytes.ok());
+  std::vector<glm::vec4> values(count);
+  if (bytes.ok()) std::memcpy(values.data(), bytes->data(), count * sizeof(glm::vec4));
+  return values;
+}
 
 }  // namespace proxygi::gpu::testing

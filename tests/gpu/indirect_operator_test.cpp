@@ -30,34 +30,13 @@ sh::RgbSh directional_sky() {
   return sky;
 }
 
-struct Rendered {
-  std::unique_ptr<SoftGiFrame> frame;
-  render::FrameTables tables;
-};
 
-Rendered render(Context& context, render::IndirectOperator op, const std::vector<render::Sphere>& spheres) {
-  Rendered out;
-  render::FrameTableSettings table_settings;
-  table_settings.order = 4;
-  out.tables = render::make_frame_tables(directional_sky(), table_settings);
+testing::RenderedFrame render(Context& context, render::IndirectOperator op, const std::vector<render::Sphere>& spheres) {
   FrameSettings settings;
   settings.width = settings.height = 64;
   settings.receiver_scale = 2;
-  settings.frames_in_flight = 1;
   settings.indirect_operator = op;
-  image::ImageF sky(8, 4, glm::vec4(1.0f));
-  auto frame = SoftGiFrame::create(context, settings, out.tables, sky);
-  EXPECT_TRUE(frame.ok()) << (frame.ok() ? "" : frame.message());
-  if (!frame.ok()) return out;
-  out.frame = std::move(*frame);
-  const auto ground = testing::ground_plane(20.0f, 4);
-  auto mesh = upload_static_mesh(context, ground.positions, ground.normals, ground.indices, glm::vec4(0.8f, 0.8f, 0.8f, 1));
-  EXPECT_TRUE(mesh.ok());
-  const FrameView view = testing::look_at({0.0f, 4.0f, 3.0f}, {0.0f, 0.0f, 0.0f}, 60.0f, 1.0f);
-  EXPECT_TRUE(out.frame->write_slot(0, view, spheres).ok());
-  const DrawItem draws[] = {mesh->draw()};
-  EXPECT_TRUE(context.submit_and_wait([&](VkCommandBuffer commands) { out.frame->record(commands, 0, draws); }).ok());
-  return out;
+  return testing::render_fixture_frame(context, settings, directional_sky(), 4, testing::ground_plane(20.0f, 4), spheres);
 }
 
 float relative_error(const glm::vec3& gpu, const glm::vec3& cpu) {

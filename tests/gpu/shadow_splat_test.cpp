@@ -15,34 +15,15 @@ namespace {
 
 using ShadowSplatTest = testing::GpuTest;
 
-struct Rendered {
-  std::unique_ptr<SoftGiFrame> frame;
-  render::FrameTables tables;
-};
 
-Rendered render_plane(Context& context, SplatMethod splat, int order, std::uint32_t size, std::uint32_t scale,
-                      const std::vector<render::Sphere>& spheres, const glm::vec3& eye) {
-  Rendered out;
-  render::FrameTableSettings table_settings;
-  table_settings.order = order;
-  out.tables = render::make_frame_tables(testing::constant_sky_sh(order, 1.0), table_settings);
+testing::RenderedFrame render_plane(Context& context, SplatMethod splat, int order, std::uint32_t size,
+                                    std::uint32_t scale, const std::vector<render::Sphere>& spheres, const glm::vec3& eye) {
   FrameSettings settings;
   settings.width = settings.height = size;
   settings.receiver_scale = scale;
-  settings.frames_in_flight = 1;
   settings.splat = splat;
-  image::ImageF sky(8, 4, glm::vec4(1.0f));
-  auto frame = SoftGiFrame::create(context, settings, out.tables, sky);
-  EXPECT_TRUE(frame.ok()) << (frame.ok() ? "" : frame.message());
-  if (!frame.ok()) return out;
-  out.frame = std::move(*frame);
-  const auto ground = testing::ground_plane(20.0f, 4);
-  auto mesh = upload_static_mesh(context, ground.positions, ground.normals, ground.indices, glm::vec4(0.8f));
-  EXPECT_TRUE(mesh.ok());
-  EXPECT_TRUE(out.frame->write_slot(0, testing::look_at(eye, {0.0f, 0.0f, 0.0f}, 60.0f, 1.0f), spheres).ok());
-  const DrawItem draws[] = {mesh->draw()};
-  EXPECT_TRUE(context.submit_and_wait([&](VkCommandBuffer commands) { out.frame->record(commands, 0, draws); }).ok());
-  return out;
+  return testing::render_fixture_frame(context, settings, testing::constant_sky_sh(order, 1.0), order,
+                                       testing::ground_plane(20.0f, 4), spheres, eye);
 }
 
 // Spheres over, straddling and overlapping the plane, and a small one whose sphere of influence

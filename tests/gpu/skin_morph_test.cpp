@@ -18,13 +18,7 @@ namespace {
 
 using SkinMorphTest = testing::GpuTest;
 
-std::vector<glm::vec4> read_vec4s(Context& context, const Buffer& buffer, std::size_t count) {
-  auto bytes = readback(context, buffer);
-  EXPECT_TRUE(bytes.ok());
-  std::vector<glm::vec4> values(count);
-  if (bytes.ok()) std::memcpy(values.data(), bytes->data(), count * sizeof(glm::vec4));
-  return values;
-}
+using testing::read_vec4s;
 
 // Target 0 moves positions and normals, target 1 positions only (its normal deltas are absent,
 // so the GPU reads zeros there), target 2 normals only.

@@ -16,13 +16,7 @@ namespace {
 
 using SkinPassTest = testing::GpuTest;
 
-std::vector<glm::vec4> read_vec4s(Context& context, const Buffer& buffer, std::size_t count) {
-  auto bytes = readback(context, buffer);
-  EXPECT_TRUE(bytes.ok());
-  std::vector<glm::vec4> values(count);
-  if (bytes.ok()) std::memcpy(values.data(), bytes->data(), count * sizeof(glm::vec4));
-  return values;
-}
+using testing::read_vec4s;
 
 Result<Buffer> matrices_buffer(Context& context, const std::vector<glm::mat4>& matrices) {
   return create_buffer_with_data(context, as_bytes(std::span<const glm::mat4>(matrices)),
