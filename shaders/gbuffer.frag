@@ -1,15 +1,17 @@
 #version 460
 // G-buffer pass (frame step 2), fragment stage: world position + eye depth, unit normal facing
 // the viewer (surfaces are treated as double-sided), linear albedo = base color factor × base
-// color texture (an sRGB image, decoded to linear by the sampler before filtering; a 1×1 white
-// image for untextured materials; CPU twin: render/texture_sampling.h). With VERTEX_IRRADIANCE
+// color texture (an sRGB image, decoded to linear by the sampler before filtering; CPU twin:
+// render/texture_sampling.h) in the BASE_COLOR_TEXTURE variants, the factor alone otherwise. With VERTEX_IRRADIANCE
 // (the vertex method) the second target holds the interpolated vertex irradiance E instead of
 // the normal (upsample_composite reads it there when counts.w == kCompositeDisplayIrradiance).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/layouts.h"
 
 layout(std140, set = 0, binding = 0) uniform Frame { FrameConstants frame; };
+#ifdef BASE_COLOR_TEXTURE
 layout(set = 0, binding = 5) uniform sampler2D base_color_texture;
+#endif
 layout(push_constant) uniform Push { GbufferPush push; };
 
 layout(location = 0) in vec3 world_position;
@@ -33,5 +35,9 @@ void main() {
 #else
   out_normal = vec4(normal, 1.0);
 #endif
+#ifdef BASE_COLOR_TEXTURE
   out_albedo = vec4(push.base_color.rgb * texture(base_color_texture, texture_coordinate).rgb, 1.0);
+#else
+  out_albedo = vec4(push.base_color.rgb, 1.0);
+#endif
 }

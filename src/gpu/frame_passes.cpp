@@ -59,8 +59,6 @@ Result<FramePipelines> FramePipelines::create(const Context& context, int order,
   FramePipelines out;
 
   GraphicsPipelineDescription gbuffer;
-  gbuffer.vertex_shader = "gbuffer.vert";
-  gbuffer.fragment_shader = "gbuffer.frag";
   gbuffer.color_formats = {kGbufferFormat, kGbufferFormat, kGbufferFormat};
   gbuffer.depth_format = kDepthFormat;
   gbuffer.depth_test = gbuffer.depth_write = true;
@@ -68,18 +66,24 @@ Result<FramePipelines> FramePipelines::create(const Context& context, int order,
                                       {1, kStorage, VK_SHADER_STAGE_VERTEX_BIT},
                                       {2, kStorage, VK_SHADER_STAGE_VERTEX_BIT},
                                       {4, kStorage, VK_SHADER_STAGE_VERTEX_BIT},  // uvs
-                                      {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT}};
-  auto made = Pipeline::graphics(context, gbuffer, gbuffer_bindings, sizeof(gpu_layout::GbufferPush));
-  if (!made) return made.error();
-  out.gbuffer = std::move(*made);
-  if (method == ShadingMethod::vertex) {
-    gbuffer.vertex_shader = "gbuffer.vert:vertex_irradiance";
-    gbuffer.fragment_shader = "gbuffer.frag:vertex_irradiance";
-    const Binding vertex_bindings[] = {gbuffer_bindings[0], gbuffer_bindings[1], gbuffer_bindings[2],
-                                       gbuffer_bindings[3], gbuffer_bindings[4], {3, kStorage, VK_SHADER_STAGE_VERTEX_BIT}};
-    auto vertex = Pipeline::graphics(context, gbuffer, vertex_bindings, sizeof(gpu_layout::GbufferPush));
-    if (!vertex) return make_error("gbuffer (vertex irradiance): " + vertex.message());
-    out.vertex_gbuffer = std::move(*vertex);
+                                      {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT},
+                                      {3, kStorage, VK_SHADER_STAGE_VERTEX_BIT}};  // vertex irradiance
+  // Variant (vertex irradiance or not) × (textured or not): shader names and binding lists.
+  const bool vertex_method = method == ShadingMethod::vertex;
+  for (int variant = 0; variant < (vertex_method ? 4 : 2); ++variant) {
+    const bool textured = variant % 2 == 1;
+    const bool vertex = variant >= 2;
+    gbuffer.vertex_shader = vertex ? "gbuffer.vert:vertex_irradiance" : "gbuffer.vert";
+    gbuffer.fragment_shader = std::string("gbuffer.frag") +
+                              (vertex ? (textured ? ":vertex_irradiance_textured" : ":vertex_irradiance")
+                                      : (textured ? ":textured" : ""));
+    std::vector<Binding> bindings(gbuffer_bindings, gbuffer_bindings + 4);
+    if (textured) bindings.push_back(gbuffer_bindings[4]);
+    if (vertex) bindings.push_back(gbuffer_bindings[5]);
+    auto made = Pipeline::graphics(context, gbuffer, bindings, sizeof(gpu_layout::GbufferPush));
+    if (!made) return make_error(gbuffer.fragment_shader + ": " + made.message());
+    Pipeline* targets[] = {&out.gbuffer, &out.gbuffer_textured, &out.vertex_gbuffer, &out.vertex_gbuffer_textured};
+    *targets[variant] = std::move(*made);
   }
 
   struct ComputeSpec {

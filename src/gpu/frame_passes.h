@@ -34,7 +34,12 @@ const char* frame_pass_name(FramePass pass);
 std::span<const FramePass> frame_pass_order(ShadingMethod method);
 
 struct FramePipelines {
+  // The G-buffer comes in an untextured and a textured pipeline. Only draws with a base color
+  // texture use the textured one: on lavapipe (Mesa 22.3) a layout holding a sampled image makes
+  // every per-draw descriptor push re-bind it, which cost the 20-mannequin crowd ~200 ms per
+  // G-buffer pass on a quiet machine (30 ms without the binding).
   Pipeline gbuffer;
+  Pipeline gbuffer_textured;
   Pipeline receivers;
   Pipeline shadow;
   Pipeline exponentiate;
@@ -42,6 +47,7 @@ struct FramePipelines {
   Pipeline upsample_composite;
   Pipeline vertex_receivers;   // vertex method only
   Pipeline vertex_gbuffer;     // vertex method only
+  Pipeline vertex_gbuffer_textured;  // vertex method only
   Pipeline ambient_occlusion;  // AO method only
 
   // Builds the pipelines `method` uses for SH order 3..6 (the order-dependent shaders are

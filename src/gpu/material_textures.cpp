@@ -150,18 +150,6 @@ Result<Image> upload_srgb_texture(Context& context, const anim::Image& source) {
   return std::move(*image);
 }
 
-Result<WhiteTexture> WhiteTexture::create(Context& context) {
-  anim::Image white;
-  white.name = "white";
-  white.width = white.height = 1;
-  white.rgba = {255, 255, 255, 255};
-  auto image = upload_srgb_texture(context, white);
-  if (!image) return image.error();
-  auto sampler = Sampler::create(context, anim::TextureSampler{});
-  if (!sampler) return sampler.error();
-  return WhiteTexture{std::move(*image), std::move(*sampler)};
-}
-
 Result<MaterialTextures> MaterialTextures::create(Context& context, const anim::Character& character) {
   MaterialTextures out;
   out.images_.resize(character.images.size());

@@ -2,9 +2,9 @@
 // Base color textures of the G-buffer pass. Each image a character's materials use is uploaded
 // once as a VK_FORMAT_R8G8B8A8_SRGB sampled image with a full mip chain, made on the CPU in
 // linear space (srgb_mip_chain); each material's glTF sampler becomes a VkSampler (wrap and
-// filters as glTF says, LOD bias kTextureLodBias when mipmapped, no anisotropy). Untextured draws bind a 1×1
-// white image, so one pipeline serves both. Albedo = base color factor × texture(uv_transform ×
-// TEXCOORD_0).
+// filters as glTF says, LOD bias kTextureLodBias when mipmapped, no anisotropy). Untextured draws
+// use the G-buffer's untextured pipeline (frame_passes.h). Albedo = base color factor ×
+// texture(uv_transform × TEXCOORD_0).
 //
 // Not supported: texCoord sets other than 0 (the material shows its texture's mean linear
 // color, as the reference path tracer does), per-texture anisotropy.
@@ -32,7 +32,7 @@ class Context;
 // 0.016 at −1, 0.018 at −1.5; 0.034 for level-0 lookups at pixel centers.
 inline constexpr float kTextureLodBias = -1.0f;
 
-// The texture half of one draw: a null view or sampler means the frame's white texture.
+// The texture half of one draw: a null view or sampler means untextured (the factor alone).
 struct BaseColorTexture {
   VkImageView view = VK_NULL_HANDLE;
   VkSampler sampler = VK_NULL_HANDLE;
@@ -69,13 +69,6 @@ std::vector<std::vector<std::uint8_t>> srgb_mip_chain(const anim::Image& image);
 
 // Uploads an RGBA8 sRGB image with its mip chain, left in SHADER_READ_ONLY_OPTIMAL.
 Result<Image> upload_srgb_texture(Context& context, const anim::Image& image);
-
-// The 1×1 white texture and the default sampler (repeat, linear, mipmap linear).
-struct WhiteTexture {
-  Image image;
-  Sampler sampler;
-  static Result<WhiteTexture> create(Context& context);
-};
 
 // Every base color texture of one character, and the binding of each of its materials.
 class MaterialTextures {

@@ -75,9 +75,6 @@ Result<std::unique_ptr<SoftGiFrame>> SoftGiFrame::create(Context& context, const
   auto pipelines = FramePipelines::create(context, frame->order_, settings.indirect_operator, settings.method);
   if (!pipelines) return pipelines.error();
   frame->pipelines_ = std::move(*pipelines);
-  auto white = WhiteTexture::create(context);
-  if (!white) return white.error();
-  frame->white_ = std::move(*white);
   if (settings.splat == SplatMethod::raster && settings.method == ShadingMethod::image_space) {
     auto splat = ShadowSplatPass::create(context, frame->order_, settings.width, settings.height,
                                          settings.receiver_scale);
@@ -224,83 +221,9 @@ void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot, Fram
   };
 
   switch (pass) {
-    case FramePass::gbuffer: {
-      context_.begin_label(commands, frame_pass_name(FramePass::gbuffer));
-      for (const Image* image : {&position_depth_, &normal_, &albedo_})
-        transition(commands, *image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
-      transition(commands, depth_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
-      VkRenderingAttachmentInfo colors[3];
-      const Image* color_images[3] = {&position_depth_, &normal_, &albedo_};
-      for (int i = 0; i < 3; ++i) {
-        colors[i] = VkRenderingAttachmentInfo{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-        colors[i].imageView = color_images[i]->view();
-        colors[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-        colors[i].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-        colors[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-        colors[i].clearValue.color = {{0.0f, 0.0f, 0.0f, 0.0f}};
-      }
-      VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-      depth.imageView = depth_.view();
-      depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-      depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-      depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-      depth.clearValue.depthStencil = {1.0f, 0};
-      VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-      rendering.renderArea = {{0, 0}, {width, height}};
-      rendering.layerCount = 1;
-      rendering.colorAttachmentCount = 3;
-      rendering.pColorAttachments = colors;
-      rendering.pDepthAttachment = &depth;
-      vkCmdBeginRendering(commands, &rendering);
-      const VkViewport viewport{0, 0, float(width), float(height), 0, 1};
-      const VkRect2D scissor{{0, 0}, {width, height}};
-      vkCmdSetViewport(commands, 0, 1, &viewport);
-      vkCmdSetScissor(commands, 0, 1, &scissor);
-      // The vertex method's variant also interpolates each vertex's shaded irradiance.
-      const bool vertex = settings_.method == ShadingMethod::vertex;
-      const Pipeline& pipeline = vertex ? pipelines_.vertex_gbuffer : pipelines_.gbuffer;
-      pipeline.bind(commands);
-      std::uint32_t receiver_offset = 0;
-      // The texture binding is pushed only when it changes (pushed bindings keep their values),
-      // so untextured characters rebind no sampled image per draw.
-      VkImageView bound_view = VK_NULL_HANDLE;
-      VkSampler bound_sampler = VK_NULL_HANDLE;
-      for (const DrawItem& draw : draws) {
-        const std::uint32_t first = receiver_offset;
-        receiver_offset += round_up_to_receiver_group(draw.vertex_count());
-        if (vertex && receiver_offset > settings_.vertex_receivers) break;  // beyond the capacity: not shaded
-        const bool textured = draw.texture.view != VK_NULL_HANDLE && draw.texture.sampler != VK_NULL_HANDLE;
-        const VkImageView view = textured ? draw.texture.view : white_.image.view();
-        const VkSampler sampler = textured ? draw.texture.sampler : white_.sampler.handle();
-        DescriptorPush descriptors;
-        descriptors.uniform_buffer(0, current.constants)
-            .storage_buffer(1, *draw.positions)
-            .storage_buffer(2, *draw.normals)
-            .storage_buffer(4, draw.uvs ? *draw.uvs : *draw.positions);  // not read without uvs
-        if (view != bound_view || sampler != bound_sampler) {
-          descriptors.sampled_image(5, view, sampler);
-          bound_view = view;
-          bound_sampler = sampler;
-        }
-        if (vertex) descriptors.storage_buffer(3, shaded_);
-        descriptors.push(context_, commands, pipeline);
-        gpu_layout::GbufferPush push{};
-        push.base_color = draw.base_color;
-        push.receiver_offset = first;
-        const glm::mat3& m = draw.texture.uv_transform;  // column-major: m[column][row]
-        push.uv_transform_u = glm::vec4(m[0][0], m[1][0], m[2][0], 0.0f);
-        push.uv_transform_v = glm::vec4(m[0][1], m[1][1], m[2][1], 0.0f);
-        push.has_uvs = draw.uvs ? 1u : 0u;
-        pipeline.push_constants(commands, &push, sizeof(push));
-        vkCmdBindIndexBuffer(commands, draw.indices->handle(), 0, VK_INDEX_TYPE_UINT32);
-        vkCmdDrawIndexed(commands, draw.index_count, 1, 0, 0, 0);
-      }
-      vkCmdEndRendering(commands);
-      for (const Image* image : {&position_depth_, &normal_, &albedo_})
-        transition(commands, *image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL);
-      context_.end_label(commands);
+    case FramePass::gbuffer:
+      record_gbuffer(commands, current, draws);
       break;
-    }
     case FramePass::receivers: {
       if (settings_.method == ShadingMethod::vertex) {
         record_vertex_receivers(commands, draws);

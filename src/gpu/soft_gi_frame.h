@@ -139,12 +139,13 @@ class SoftGiFrame {
   };
 
   void record_ambient_occlusion(VkCommandBuffer commands, const Slot& slot) const;
+  // The G-buffer pass (src/gpu/gbuffer_pass.cpp).
+  void record_gbuffer(VkCommandBuffer commands, const Slot& slot, std::span<const DrawItem> draws) const;
 
   Context& context_;
   FrameSettings settings_;
   int order_ = 4;
   FramePipelines pipelines_;
-  WhiteTexture white_;  // bound by untextured draws
   std::unique_ptr<ShadowSplatPass> shadow_splat_;  // only with SplatMethod::raster
   Image position_depth_, normal_, albedo_, depth_;
   Buffer receivers_, log_occlusion_, direct_, indirect_, shaded_, irradiance_, hdr_, ldr_;
