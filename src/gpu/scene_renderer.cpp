@@ -8,6 +8,7 @@
 #include "anim/posed_character.h"
 #include "anim/skinning.h"
 #include "base/log.h"
+#include "gpu/scene_frame_settings.h"
 #include "gpu/transfer.h"
 #include "proxies/rig_cache.h"
 #include "proxies/rig_file.h"
@@ -87,38 +88,6 @@ Result<int> resolve_clip(const anim::Character& character, const scene::ClipRef&
   return anim::find_clip(character, std::get<std::string>(clip));
 }
 
-render::FrameTableSettings table_settings(const scene::RenderSettings& render) {
-  render::FrameTableSettings settings;
-  settings.order = render.sh_order;
-  settings.eta_shadow = render.shadow_eta;
-  settings.eta_indirect = render.indirect_eta;
-  return settings;
-}
-
-FrameSettings frame_settings(const scene::Scene& scene) {
-  FrameSettings settings;
-  settings.method = scene.render.method == scene::ShadingMethod::vertex              ? ShadingMethod::vertex
-                    : scene.render.method == scene::ShadingMethod::ambient_occlusion ? ShadingMethod::ambient_occlusion
-                                                                                      : ShadingMethod::image_space;
-  settings.width = std::uint32_t(scene.output.width);
-  settings.height = std::uint32_t(scene.output.height);
-  settings.receiver_scale = std::uint32_t(scene.render.receiver_scale);
-  settings.hybrid_tau = scene.render.hyb_tau;
-  settings.optimal_linear_only = scene.render.exponential == scene::Exponential::ol;
-  settings.upsample = scene.render.upsampling == scene::Upsampling::bilinear ? render::UpsampleMode::bilinear
-                                                                              : render::UpsampleMode::bilateral;
-  settings.indirect = scene.render.indirect;
-  settings.indirect_operator = scene.render.indirect_operator == scene::IndirectOperator::point   ? render::IndirectOperator::point
-                               : scene.render.indirect_operator == scene::IndirectOperator::exact ? render::IndirectOperator::exact
-                                                                                                  : render::IndirectOperator::averaged;
-  settings.splat = scene.render.splat == scene::SplatMethod::raster ? SplatMethod::raster : SplatMethod::compute;
-  settings.tonemap = scene.render.tonemap == scene::Tonemap::reinhard ? render::Tonemap::reinhard
-                     : scene.render.tonemap == scene::Tonemap::clamp  ? render::Tonemap::clamp
-                                                                      : render::Tonemap::aces;
-  settings.exposure = std::exp2(scene.render.exposure_ev);
-  return settings;
-}
-
 }  // namespace
 
 SceneRenderer::SceneRenderer(Context& context) : context_(context) {}
@@ -137,7 +106,7 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Context& context, c
                                                              const SceneRendererOptions& options) {
   std::unique_ptr<SceneRenderer> renderer(new SceneRenderer(context));
   renderer->scene_ = scene;
-  FrameSettings settings = frame_settings(scene);
+  FrameSettings settings = scene_frame_settings(scene);
   if (settings.splat == SplatMethod::raster && settings.method != ShadingMethod::image_space)
     log_warning("render.splat: 'raster' splats onto image-space receivers only; this method does not use it");
   const std::uint32_t slots = std::max(settings.frames_in_flight, 1u);
@@ -295,7 +264,7 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Context& context, c
   }
   auto lighting = render::make_environment_lighting(scene, scene.render.sh_order);
   if (!lighting) return lighting.error();
-  const render::FrameTables tables = render::make_frame_tables(lighting->lighting, table_settings(scene.render));
+  const render::FrameTables tables = render::make_frame_tables(lighting->lighting, scene_table_settings(scene.render));
   auto frame = SoftGiFrame::create(context, settings, tables, lighting->background);
   if (!frame) return frame.error();
   renderer->frame_ = std::move(*frame);
