@@ -1,4 +1,4 @@
-// proxygi bench chart [--json] [--out DIR] [--cache DIR] [--size N] [--frames N] [--timing-frames N]
+// proxygi bench chart [--json] [--out DIR] [--cache DIR] [--size N] [--frames N (3)] [--timing-frames N (8)]
 //   [--reference-spp N] [--scenes a,b] [--shared DIR] [--lighting sh|full] [--quick]
 //   [--references-only]
 // The speed–accuracy chart: for the default scene and each shared character, a few frames of
@@ -25,8 +25,8 @@ struct ChartArgs {
   std::string out = "out/chart";
   std::string cache = "out/chart-cache";
   int size = 192;
-  int frames = 2;
-  int timing_frames = 4;
+  int frames = 3;
+  int timing_frames = 8;
   int reference_spp = 1024;
   std::vector<std::string> scenes;
   std::string shared = "../shared";
