@@ -1,7 +1,6 @@
 #include "gpu/material_textures.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstring>
 #include <utility>
@@ -85,12 +84,10 @@ std::vector<std::vector<std::uint8_t>> srgb_mip_chain(const anim::Image& image) 
   if (!valid_image(image)) return levels;
   levels.push_back(std::vector<std::uint8_t>(image.rgba.begin(),
                                              image.rgba.begin() + std::ptrdiff_t(image.width) * image.height * 4));
-  std::array<float, 256> decode{};
-  for (int code = 0; code < 256; ++code) decode[std::size_t(code)] = image::srgb_to_linear(float(code) / 255.0f);
   std::vector<glm::vec4> linear(std::size_t(image.width) * std::size_t(image.height));
   for (std::size_t i = 0; i < linear.size(); ++i)
-    linear[i] = glm::vec4(decode[image.rgba[4 * i]], decode[image.rgba[4 * i + 1]], decode[image.rgba[4 * i + 2]],
-                          float(image.rgba[4 * i + 3]) / 255.0f);
+    linear[i] = glm::vec4(image::srgb8_to_linear(image.rgba[4 * i]), image::srgb8_to_linear(image.rgba[4 * i + 1]),
+                          image::srgb8_to_linear(image.rgba[4 * i + 2]), float(image.rgba[4 * i + 3]) / 255.0f);
   int width = image.width, height = image.height;
   auto encode = [](float value) { return std::uint8_t(std::lround(std::clamp(value, 0.0f, 1.0f) * 255.0f)); };
   while (width > 1 || height > 1) {

@@ -2,6 +2,7 @@
 // Float images and their files. ImageF holds linear RGBA radiance (or any float data), row-major,
 // top row first. PNG files are sRGB 8-bit: read_image converts them to linear, write_png
 // converts linear to sRGB after clamping to [0, 1]. Writes are atomic (temporary file + rename).
+#include <cstdint>
 #include <filesystem>
 #include <vector>
 
@@ -43,5 +44,7 @@ Status write_exr(const std::filesystem::path& path, const ImageF& image);
 // extended; the caller clamps where it must).
 float srgb_to_linear(float encoded);
 float linear_to_srgb(float linear);
+// srgb_to_linear(code / 255) for an 8-bit code, from a table built once.
+float srgb8_to_linear(std::uint8_t code);
 
 }  // namespace proxygi::image

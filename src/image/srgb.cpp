@@ -1,3 +1,4 @@
+#include <array>
 #include <cmath>
 
 #include "image/image.h"
@@ -13,6 +14,15 @@ float srgb_to_linear(float encoded) {
 float linear_to_srgb(float linear) {
   if (linear <= 0.0031308f) return linear * 12.92f;
   return 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+}
+
+float srgb8_to_linear(std::uint8_t code) {
+  static const std::array<float, 256> table = [] {
+    std::array<float, 256> decoded{};
+    for (int i = 0; i < 256; ++i) decoded[std::size_t(i)] = srgb_to_linear(float(i) / 255.0f);
+    return decoded;
+  }();
+  return table[code];
 }
 
 }  // namespace proxygi::image

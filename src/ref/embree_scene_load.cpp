@@ -1,6 +1,5 @@
 #include "ref/embree_scene_load.h"
 
-#include <array>
 #include <string>
 #include <utility>
 #include <variant>
@@ -18,15 +17,13 @@ namespace {
 std::shared_ptr<const LinearTexture> decode_texture(const anim::Image& image) {
   if (image.width <= 0 || image.height <= 0 || image.rgba.size() < std::size_t(image.width) * std::size_t(image.height) * 4)
     return nullptr;
-  // A 256-entry table: every 8-bit sRGB code decoded once.
-  std::array<float, 256> table{};
-  for (int i = 0; i < 256; ++i) table[std::size_t(i)] = image::srgb_to_linear(float(i) / 255.0f);
   auto texture = std::make_shared<LinearTexture>();
   texture->width = image.width;
   texture->height = image.height;
   texture->texels.resize(std::size_t(image.width) * std::size_t(image.height));
   for (std::size_t i = 0; i < texture->texels.size(); ++i)
-    texture->texels[i] = glm::vec3(table[image.rgba[4 * i]], table[image.rgba[4 * i + 1]], table[image.rgba[4 * i + 2]]);
+    texture->texels[i] = glm::vec3(image::srgb8_to_linear(image.rgba[4 * i]), image::srgb8_to_linear(image.rgba[4 * i + 1]),
+                                   image::srgb8_to_linear(image.rgba[4 * i + 2]));
   return texture;
 }
 

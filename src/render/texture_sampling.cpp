@@ -48,7 +48,7 @@ glm::vec3 mean_linear_color(const anim::Image& image) {
   if (texels == 0 || image.rgba.size() < texels * 4) return glm::vec3(1.0f);
   glm::dvec3 sum(0.0);
   for (std::size_t i = 0; i < texels; ++i)
-    for (int c = 0; c < 3; ++c) sum[c] += image::srgb_to_linear(float(image.rgba[i * 4 + std::size_t(c)]) / 255.0f);
+    for (int c = 0; c < 3; ++c) sum[c] += image::srgb8_to_linear(image.rgba[i * 4 + std::size_t(c)]);
   return glm::vec3(sum / double(texels));
 }
 
