@@ -48,10 +48,7 @@ void add_path_tracing_rows(const std::string& scene, const std::vector<std::vect
     const double count = double(frames.size());
     for (const auto& frame : frames) {
       row.milliseconds += frame[i].milliseconds / count;
-      row.relative_mse += frame[i].scores.relative_mse / count;
-      row.rmse += frame[i].scores.rmse / count;
-      row.ssim += frame[i].scores.ssim / count;
-      row.flip += frame[i].scores.flip / count;
+      study::add_scores(row, frame[i].scores, 1.0 / count);
     }
     rows.push_back(row);
   }
@@ -92,8 +89,10 @@ int run_bench_chart(const ChartArgs& args) {
   for (const study::ChartScene& chart : *scenes) {
     std::vector<study::FrameReference> references;
     std::vector<std::vector<study::PathTracingScore>> path_tracing;
+    auto sources = study::load_scene_sources(chart, reference_options);
+    if (!sources) return fail_runtime("bench chart: " + chart.name + ": " + sources.message());
     for (int frame : chart.frames) {
-      auto tracer = study::FrameTracer::create(chart, frame, reference_options);
+      auto tracer = study::FrameTracer::create(*sources, frame);
       if (!tracer) return fail_runtime("bench chart: " + chart.name + ": " + tracer.message());
       auto reference = study::load_or_render_reference(chart, frame, **tracer, reference_options);
       if (!reference) return fail_runtime("bench chart: " + chart.name + " reference: " + reference.message());

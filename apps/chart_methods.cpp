@@ -96,11 +96,7 @@ Result<study::ChartRow> run_raster_method(gpu::Context& context, const study::Ch
     if (!finished) return finished.error();
     auto scores = study::score_image(finished->hdr, references[i]);
     if (!scores) return make_error("frame " + std::to_string(chart.frames[i]) + ": " + scores.message());
-    const double count = double(chart.frames.size());
-    row.relative_mse += scores->relative_mse / count;
-    row.rmse += scores->rmse / count;
-    row.ssim += scores->ssim / count;
-    row.flip += scores->flip / count;
+    study::add_scores(row, *scores, 1.0 / double(chart.frames.size()));
   }
   return row;
 }

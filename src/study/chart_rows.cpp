@@ -25,8 +25,6 @@ std::string row_label(const ChartRow& row) {
   return text.str();
 }
 
-std::string row_key(const ChartRow& row) { return row.scene + '|' + row_label(row); }
-
 void mark_pareto_fronts(std::vector<ChartRow>& rows) {
   for (ChartRow& row : rows) {
     row.pareto = true;

@@ -33,8 +33,6 @@ struct ChartRow {
 
 // "proxy n4 k4 bilateral averaged", "path+guided 64 spp", ...
 std::string row_label(const ChartRow& row);
-// Rows with the same method and setting on the same scene: the key averaged over frames.
-std::string row_key(const ChartRow& row);
 
 // Marks, within each scene separately, the rows no other row beats in both milliseconds and
 // relative MSE (ties in both keep both). Resets `pareto` first.

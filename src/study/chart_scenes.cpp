@@ -17,14 +17,12 @@ struct SharedCharacter {
   scene::ClipRef clip;
 };
 
-// Bounds of the character's posed meshes at clip time 0 under an identity transform.
-Result<std::pair<glm::vec3, glm::vec3>> posed_bounds(const scene::Scene& scene, const std::filesystem::path& assets_dir) {
+// Bounds of the character's posed meshes at clip time 0 under an identity transform; `assets`
+// belong to `scene` (one character, no static meshes).
+Result<std::pair<glm::vec3, glm::vec3>> posed_bounds(const scene::Scene& scene, const ref::SceneAssets& assets) {
   scene::Scene alone = scene;
   alone.ground.enabled = false;
-  alone.static_meshes.clear();
-  auto assets = ref::load_scene_assets(alone, assets_dir);
-  if (!assets) return assets.error();
-  auto meshes = ref::pose_scene_meshes(alone, *assets, 0.0);
+  auto meshes = ref::pose_scene_meshes(alone, assets, 0.0);
   if (!meshes) return meshes.error();
   glm::vec3 low(std::numeric_limits<float>::max()), high(-std::numeric_limits<float>::max());
   for (const ref::TriangleMesh& mesh : *meshes)
@@ -47,7 +45,10 @@ Result<ChartScene> character_scene(const SharedCharacter& shared, const ChartSce
   character.proxies = (options.rig_cache_dir / (std::string(shared.name) + ".proxies.json")).string();
   chart.scene.characters = {character};
 
-  auto bounds = posed_bounds(chart.scene, options.assets_dir);
+  // The model is imported once: for its bounds here and its clip's duration below.
+  auto assets = ref::load_scene_assets(chart.scene, options.assets_dir);
+  if (!assets) return assets.error();
+  auto bounds = posed_bounds(chart.scene, *assets);
   if (!bounds) return bounds.error();
   const glm::vec3 extent = bounds->second - bounds->first;
   const float scale = 1.7f / std::max({extent.x, extent.y, extent.z});
@@ -63,8 +64,6 @@ Result<ChartScene> character_scene(const SharedCharacter& shared, const ChartSce
   chart.scene.camera.kind = camera;
 
   // One pass over the clip: the frames of motion are spread over its duration.
-  auto assets = ref::load_scene_assets(chart.scene, options.assets_dir);
-  if (!assets) return assets.error();
   const auto& clips = assets->characters.front().character.clips;
   const int clip = assets->characters.front().clip;
   const float duration = clip >= 0 && std::size_t(clip) < clips.size() ? clips[std::size_t(clip)].duration : 1.0f;

@@ -15,42 +15,46 @@
 namespace proxygi::study {
 
 struct FrameTracer::State {
-  scene::Scene scene;
+  const SceneSources* sources = nullptr;
   std::unique_ptr<ref::EmbreeScene> geometry;
-  std::unique_ptr<ref::EnvironmentLight> lighting;
-  std::unique_ptr<ref::EnvironmentLight> background;
   std::unique_ptr<ref::PathTracer> tracer;
   scene::CameraState camera;
 };
 
 FrameTracer::FrameTracer(std::unique_ptr<State> state) : state_(std::move(state)) {}
 FrameTracer::~FrameTracer() = default;
-int FrameTracer::width() const { return state_->scene.output.width; }
-int FrameTracer::height() const { return state_->scene.output.height; }
+int FrameTracer::width() const { return state_->sources->scene.output.width; }
+int FrameTracer::height() const { return state_->sources->scene.output.height; }
 
-Result<std::unique_ptr<FrameTracer>> FrameTracer::create(const ChartScene& chart, int frame,
-                                                         const ReferenceOptions& options) {
-  auto state = std::make_unique<State>();
-  state->scene = chart.scene;
-  state->scene.render.sh_order = options.reference_order;
-  const double time_s = scene::frame_time_s(state->scene.output, frame);
-  auto assets = ref::load_scene_assets(state->scene, options.assets_dir);
+Result<SceneSources> load_scene_sources(const ChartScene& chart, const ReferenceOptions& options) {
+  SceneSources sources;
+  sources.scene = chart.scene;
+  sources.scene.render.sh_order = options.reference_order;
+  auto assets = ref::load_scene_assets(sources.scene, options.assets_dir);
   if (!assets) return assets.error();
-  auto meshes = ref::pose_scene_meshes(state->scene, *assets, time_s);
+  sources.assets = std::move(*assets);
+  auto lighting = ref::EnvironmentLight::from_scene(sources.scene, options.lighting);
+  if (!lighting) return lighting.error();
+  sources.lighting = std::make_unique<ref::EnvironmentLight>(std::move(*lighting));
+  auto background = ref::EnvironmentLight::from_scene(sources.scene, ref::LightingKind::full);
+  if (!background) return background.error();
+  sources.background = std::make_unique<ref::EnvironmentLight>(std::move(*background));
+  return sources;
+}
+
+Result<std::unique_ptr<FrameTracer>> FrameTracer::create(const SceneSources& sources, int frame) {
+  auto state = std::make_unique<State>();
+  state->sources = &sources;
+  const double time_s = scene::frame_time_s(sources.scene.output, frame);
+  auto meshes = ref::pose_scene_meshes(sources.scene, sources.assets, time_s);
   if (!meshes) return meshes.error();
   auto geometry = ref::EmbreeScene::build(std::move(*meshes));
   if (!geometry) return geometry.error();
   state->geometry = std::make_unique<ref::EmbreeScene>(std::move(*geometry));
-  auto lighting = ref::EnvironmentLight::from_scene(state->scene, options.lighting);
-  if (!lighting) return lighting.error();
-  state->lighting = std::make_unique<ref::EnvironmentLight>(std::move(*lighting));
-  auto background = ref::EnvironmentLight::from_scene(state->scene, ref::LightingKind::full);
-  if (!background) return background.error();
-  state->background = std::make_unique<ref::EnvironmentLight>(std::move(*background));
   ref::PathTracerSettings settings;
   settings.transport = ref::LightTransport::one_bounce;
-  state->tracer = std::make_unique<ref::PathTracer>(*state->geometry, *state->lighting, *state->background, settings);
-  state->camera = scene::evaluate_scene_camera(state->scene, time_s);
+  state->tracer = std::make_unique<ref::PathTracer>(*state->geometry, *sources.lighting, *sources.background, settings);
+  state->camera = scene::evaluate_scene_camera(sources.scene, time_s);
   return std::unique_ptr<FrameTracer>(new FrameTracer(std::move(state)));
 }
 
@@ -169,6 +173,13 @@ Result<ImageScores> score_image(const image::ImageF& test, const FrameReference&
   if (!flip) return flip.error();
   scores.flip = flip->flip.mean;
   return scores;
+}
+
+void add_scores(ChartRow& row, const ImageScores& scores, double weight) {
+  row.relative_mse += weight * scores.relative_mse;
+  row.rmse += weight * scores.rmse;
+  row.ssim += weight * scores.ssim;
+  row.flip += weight * scores.flip;
 }
 
 Result<std::vector<PathTracingScore>> score_path_tracing(const FrameTracer& tracer, const FrameReference& reference,

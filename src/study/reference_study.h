@@ -18,9 +18,11 @@
 
 #include "base/result.h"
 #include "image/image.h"
+#include "ref/embree_scene_load.h"
 #include "ref/metrics.h"
 #include "ref/path_tracer_lighting.h"
 #include "ref/reference_render.h"
+#include "study/chart_rows.h"
 #include "study/chart_scenes.h"
 
 namespace proxygi::study {
@@ -54,10 +56,21 @@ struct ImageScores {
   double flip = 0.0;  // HDR-FLIP
 };
 
+// What every frame of one chart scene shares: the scene (render.sh_order = the reference order),
+// its imported models, and the reference lighting and background. Made once per scene.
+struct SceneSources {
+  scene::Scene scene;
+  ref::SceneAssets assets;
+  std::unique_ptr<ref::EnvironmentLight> lighting;    // options.lighting
+  std::unique_ptr<ref::EnvironmentLight> background;  // the full environment, seen by missing rays
+};
+Result<SceneSources> load_scene_sources(const ChartScene& chart, const ReferenceOptions& options);
+
 // The path tracer set up for one frame of a chart scene (geometry posed at the frame's time).
+// `sources` must outlive the tracer.
 class FrameTracer {
  public:
-  static Result<std::unique_ptr<FrameTracer>> create(const ChartScene& chart, int frame, const ReferenceOptions& options);
+  static Result<std::unique_ptr<FrameTracer>> create(const SceneSources& sources, int frame);
   ~FrameTracer();
   // Traces `spp` samples with `seed` from sample 0 (all cores); seconds = tracing wall time.
   Result<ref::SampleSums> trace(int spp, std::uint32_t seed, std::uint32_t first_sample, ref::RenderStats* stats,
@@ -76,6 +89,8 @@ Result<FrameReference> load_or_render_reference(const ChartScene& chart, int fra
                                                 const ReferenceOptions& options);
 
 Result<ImageScores> score_image(const image::ImageF& test, const FrameReference& reference);
+// Adds weight × scores to the row's errors (a mean over n frames: weight 1/n per frame).
+void add_scores(ChartRow& row, const ImageScores& scores, double weight);
 
 struct PathTracingScore {
   int samples = 0;
