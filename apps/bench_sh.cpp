@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/commands.h"
+#include "settings/render_settings.h"
 #include "apps/matplotlib_chart.h"
 #include "base/atomic_file.h"
 #include "sh/accuracy_study.h"
@@ -163,7 +164,9 @@ int run_bench_sh(const BenchShArgs& args) {
   sh::AccuracyStudyOptions options;
   if (args.receivers < 1) return fail_bad_input("bench sh: --receivers must be >= 1");
   for (int order : args.orders)
-    if (order < 3 || order > 6) return fail_bad_input("bench sh: --orders must be in 3..6");
+    if (order < settings::kMinShOrder || order > settings::kMaxShOrder)
+      return fail_bad_input("bench sh: --orders must be in " + std::to_string(settings::kMinShOrder) + ".." +
+                            std::to_string(settings::kMaxShOrder));
   if (args.min_time <= 0.0) return fail_bad_input("bench sh: --min-time must be > 0");
   options.receivers = args.receivers;
   options.seed = args.seed;

@@ -30,7 +30,7 @@ glm::vec3 interpolate_triangle(const glm::vec3& x, const glm::vec3& a, const glm
 }
 
 glm::vec3 unshadowed_irradiance(const FrameTables& tables, const glm::vec3& normal) {
-  const int order = tables.settings.order;
+  const int order = tables.settings.sh_order;
   std::vector<float> lh(std::size_t(order * order));
   glm::vec3 irradiance(0.0f);
   for (int channel = 0; channel < 3; ++channel) {
@@ -42,7 +42,7 @@ glm::vec3 unshadowed_irradiance(const FrameTables& tables, const glm::vec3& norm
 
 AmbientOcclusionResult ambient_occlusion(const FrameTables& tables, const glm::vec3& p, const glm::vec3& normal,
                                          std::span<const Sphere> spheres) {
-  const float eta = tables.settings.eta_shadow;
+  const float eta = tables.settings.shadow_eta;
   const float minimum_sine = 1.0f / eta;
   AmbientOcclusionResult result;
   for (const Sphere& sphere : spheres) {

@@ -1,5 +1,5 @@
 #pragma once
-// CPU twins of the prior-work baselines of the speed–accuracy chart (gpu::ShadingMethod):
+// CPU twins of the prior-work baselines of the speed–accuracy chart (settings::ShadingMethod):
 //   vertex_receiver     ↔ vertex_receivers.comp   a mesh vertex as a receiver (vertex method)
 //   ambient_occlusion   ↔ ambient_occlusion.comp  scalar AO from the proxy spheres (AO method)
 // The vertex method shades its receivers with the image-space twins of shading.h

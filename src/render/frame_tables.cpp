@@ -5,31 +5,34 @@
 
 namespace proxygi::render {
 
-FrameTables make_frame_tables(const sh::RgbSh& lighting, const FrameTableSettings& settings) {
-  PROXYGI_CHECK(settings.order >= 3 && settings.order <= 6, "frame SH order is 3..6");
-  PROXYGI_CHECK(lighting.order >= settings.order, "lighting projected at a lower order than the frame");
+FrameTables make_frame_tables(const sh::RgbSh& lighting, const settings::RenderSettings& settings,
+                              const TableResolution& resolution) {
+  const int order = settings.sh_order;
+  PROXYGI_CHECK(order >= settings::kMinShOrder && order <= settings::kMaxShOrder, "frame SH order out of range");
+  PROXYGI_CHECK(lighting.order >= order, "lighting projected at a lower order than the frame");
   FrameTables tables;
   tables.settings = settings;
-  const int count = settings.order * settings.order;
-  tables.lighting.order = settings.order;
+  tables.resolution = resolution;
+  const int count = order * order;
+  tables.lighting.order = order;
   for (int channel = 0; channel < 3; ++channel) {
     auto& coefficients = tables.lighting.channels[std::size_t(channel)];
     coefficients.assign(lighting.channels[std::size_t(channel)].begin(),
                         lighting.channels[std::size_t(channel)].begin() + count);
-    if (settings.window) sh::apply_ringing_window(settings.order, coefficients);
+    if (settings.sh_window) sh::apply_ringing_window(order, coefficients);
   }
 
-  tables.log_occlusion = sh::make_log_occlusion_table(settings.order, settings.table_rows);
-  sh::apply_influence_fade(tables.log_occlusion, settings.eta_shadow);
-  tables.proxy_visibility = sh::make_proxy_visibility_table(3, settings.table_rows);
-  sh::apply_influence_fade(tables.proxy_visibility, settings.eta_indirect);
-  tables.exact_indirect = sh::make_exact_indirect_table(3, settings.table_rows);
-  sh::apply_influence_fade(tables.exact_indirect, settings.eta_indirect);
-  tables.optimal_linear = sh::make_optimal_linear_table(settings.order, settings.optimal_linear_rows);
+  tables.log_occlusion = sh::make_log_occlusion_table(order, resolution.table_rows);
+  sh::apply_influence_fade(tables.log_occlusion, settings.shadow_eta);
+  tables.proxy_visibility = sh::make_proxy_visibility_table(3, resolution.table_rows);
+  sh::apply_influence_fade(tables.proxy_visibility, settings.indirect_eta);
+  tables.exact_indirect = sh::make_exact_indirect_table(3, resolution.table_rows);
+  sh::apply_influence_fade(tables.exact_indirect, settings.indirect_eta);
+  tables.optimal_linear = sh::make_optimal_linear_table(order, resolution.optimal_linear_rows);
 
   for (int channel = 0; channel < 3; ++channel)
     tables.lighting_cube[std::size_t(channel)] = sh::make_lighting_cube_map(
-        settings.order, tables.lighting.channels[std::size_t(channel)], settings.cube_face_size);
+        order, tables.lighting.channels[std::size_t(channel)], resolution.cube_face_size);
 
   const std::vector<double> cosine = sh::clamped_cosine_zonal(3);
   for (int channel = 0; channel < 3; ++channel) {

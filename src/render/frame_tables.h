@@ -10,6 +10,7 @@
 
 #include <glm/glm.hpp>
 
+#include "settings/render_settings.h"
 #include "sh/environment.h"
 #include "sh/exponential.h"
 #include "sh/indirect.h"
@@ -17,28 +18,28 @@
 
 namespace proxygi::render {
 
-struct FrameTableSettings {
-  int order = 4;                  // SH order of shadows, 3..6
-  float eta_shadow = 15.0f;       // sphere of influence of shadows, in radii
-  float eta_indirect = 10.0f;     // sphere of influence of indirect light, in radii
+// Sizes of the tables (not settings: they are fixed for the frame and the CPU twins alike).
+struct TableResolution {
   int table_rows = 256;           // log-occlusion, visibility and exact-indirect tables
   int optimal_linear_rows = 256;  // OL table
   int cube_face_size = 16;        // LH cube map texels per face edge
-  bool window = true;             // apply the ringing window cos(π l / (2h)), h = 2n, to L
 };
 
 struct FrameTables {
-  FrameTableSettings settings;
-  sh::RgbSh lighting;                          // windowed, order = settings.order
-  sh::ZonalTable log_occlusion;                // order settings.order, faded at 1/η_shadow
+  settings::RenderSettings settings;             // what the tables were built for (sh_order, η, sh_window)
+  TableResolution resolution;
+  sh::RgbSh lighting;                          // windowed when settings.sh_window, order = settings.sh_order
+  sh::ZonalTable log_occlusion;                // order settings.sh_order, faded at 1/η_shadow
   sh::ZonalTable proxy_visibility;             // order 3, faded at 1/η_indirect
-  sh::OptimalLinearTable optimal_linear;       // order settings.order
+  sh::OptimalLinearTable optimal_linear;       // order settings.sh_order
   sh::ExactIndirectTable exact_indirect;       // M(s), order 3, faded at 1/η_indirect
   std::array<sh::LightingCubeMap, 3> lighting_cube;  // LH(N) per channel r, g, b
   std::array<std::array<float, 9>, 3> irradiance_order3;  // L̃ per channel, order 3
 };
 
-// `lighting` is the unwindowed SH projection of the environment (order ≥ settings.order).
-FrameTables make_frame_tables(const sh::RgbSh& lighting, const FrameTableSettings& settings);
+// `lighting` is the unwindowed SH projection of the environment (order ≥ settings.sh_order). Reads
+// the table settings of `settings` (sh_order, shadow_eta, indirect_eta, sh_window).
+FrameTables make_frame_tables(const sh::RgbSh& lighting, const settings::RenderSettings& settings,
+                              const TableResolution& resolution = {});
 
 }  // namespace proxygi::render

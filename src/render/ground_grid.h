@@ -1,5 +1,5 @@
 #pragma once
-// The tessellated ground of the vertex method (gpu::ShadingMethod::vertex). The image-space
+// The tessellated ground of the vertex method (settings::ShadingMethod::vertex). The image-space
 // method draws the ground as one quad; vertex receivers need vertices where shadows and bounce
 // light vary, so the ground becomes a tensor-product grid: lines every 1/vertices_per_metre over
 // the fine region and the ground's edges beyond it (no T-junctions, so no cracks). Outside the

@@ -41,12 +41,12 @@ bool outside_influence(const glm::vec3& p, const Sphere& sphere, float eta) {
 
 std::vector<float> accumulate_log_occlusion(const FrameTables& tables, const glm::vec3& p, const glm::vec3& normal,
                                             std::span<const Sphere> spheres) {
-  const int order = tables.settings.order;
+  const int order = tables.settings.sh_order;
   std::vector<float> f(std::size_t(order * order), 0.0f);
   float zonal[6];
-  const float minimum_sine = 1.0f / tables.settings.eta_shadow;
+  const float minimum_sine = 1.0f / tables.settings.shadow_eta;
   for (const Sphere& sphere : spheres) {
-    if (outside_influence(p, sphere, tables.settings.eta_shadow)) continue;
+    if (outside_influence(p, sphere, tables.settings.shadow_eta)) continue;
     const auto seen = sh::proxy_at_receiver(p, normal, {sphere.center, sphere.radius});
     if (!seen || seen->sine <= minimum_sine) continue;
     tables.log_occlusion.lookup(seen->sine, std::span<float>(zonal, std::size_t(order)));
@@ -96,7 +96,7 @@ void lookup_lighting_cube(const sh::LightingCubeMap& cube, const glm::vec3& n, s
 
 DirectResult exponentiate_and_shade(const FrameTables& tables, std::span<const float> log_occlusion, float tau,
                                     const glm::vec3& normal) {
-  const int order = tables.settings.order;
+  const int order = tables.settings.sh_order;
   const std::size_t count = std::size_t(order * order);
   std::vector<float> visibility(count);
   DirectResult result;
@@ -112,28 +112,19 @@ DirectResult exponentiate_and_shade(const FrameTables& tables, std::span<const f
   return result;
 }
 
-const char* indirect_operator_name(IndirectOperator op) {
-  switch (op) {
-    case IndirectOperator::point: return "point";
-    case IndirectOperator::averaged: return "averaged";
-    case IndirectOperator::exact: return "exact";
-  }
-  return "unknown";
-}
-
 IndirectResult accumulate_indirect(const FrameTables& tables, const glm::vec3& p, const glm::vec3& normal,
-                                   std::span<const Sphere> spheres, float occlusion_dc, IndirectOperator op) {
+                                   std::span<const Sphere> spheres, float occlusion_dc, settings::IndirectOperator op) {
   IndirectResult result;
   float normal_basis[9];
   sh::evaluate_basis(3, normal, std::span<float>(normal_basis, 9));
   const float cosine[3] = {0.886226925f, 1.023326708f, 0.495415912f};  // clamped cosine h_l
-  const float minimum_sine = 1.0f / tables.settings.eta_indirect;
+  const float minimum_sine = 1.0f / tables.settings.indirect_eta;
   glm::vec3 summed(0.0f);
   for (const Sphere& sphere : spheres) {
-    if (outside_influence(p, sphere, tables.settings.eta_indirect)) continue;
+    if (outside_influence(p, sphere, tables.settings.indirect_eta)) continue;
     const auto seen = sh::proxy_at_receiver(p, normal, {sphere.center, sphere.radius});
     if (!seen || seen->sine <= minimum_sine) continue;
-    if (op == IndirectOperator::exact) {
+    if (op == settings::IndirectOperator::exact) {
       // H(N) · I_i = W · L̃ per channel (render/exact_indirect.h); the table carries the fade.
       const std::array<float, 9> weights = exact_indirect_weights(tables.exact_indirect, seen->sine, seen->direction, normal);
       glm::vec3 radiance(0.0f);
@@ -162,7 +153,7 @@ IndirectResult accumulate_indirect(const FrameTables& tables, const glm::vec3& p
         }
         const float scale = zonal_scale(l);
         seen_cosine += scale * visibility[l] * scale * cosine[l] * band_normal;
-        if (op == IndirectOperator::point)
+        if (op == settings::IndirectOperator::point)
           kappa += (l % 2 == 0 ? 1.0f : -1.0f) * band_light;  // sqrt(4π/(2l+1)) K_l = (−1)^l
         else
           kappa += scale * averaged[l] * band_light;
@@ -171,7 +162,7 @@ IndirectResult accumulate_indirect(const FrameTables& tables, const glm::vec3& p
     }
     // ω_i, faded like the tables so the normalization fades with them.
     const float solid_angle = 2.0f * kPi * (1.0f - std::sqrt(std::max(1.0f - seen->sine * seen->sine, 0.0f)));
-    result.summed_solid_angle += solid_angle * sh::influence_fade_weight(seen->sine, tables.settings.eta_indirect,
+    result.summed_solid_angle += solid_angle * sh::influence_fade_weight(seen->sine, tables.settings.indirect_eta,
                                                                          tables.proxy_visibility.rows);
   }
   if (result.summed_solid_angle > 0.0f) {
@@ -184,7 +175,7 @@ IndirectResult accumulate_indirect(const FrameTables& tables, const glm::vec3& p
   return result;
 }
 
-glm::vec3 upsample(std::span<const UpsampleTap, 4> taps, float depth, const glm::vec3& normal, UpsampleMode mode,
+glm::vec3 upsample(std::span<const UpsampleTap, 4> taps, float depth, const glm::vec3& normal, settings::Upsampling mode,
                    float depth_epsilon) {
   glm::vec3 total(0.0f);
   float weight_sum = 0.0f, bilinear_sum = 0.0f;
@@ -192,7 +183,7 @@ glm::vec3 upsample(std::span<const UpsampleTap, 4> taps, float depth, const glm:
     if (tap.depth <= 0.0f) continue;
     float weight = tap.bilinear_weight;
     bilinear_sum += tap.bilinear_weight;
-    if (mode == UpsampleMode::bilateral) {
+    if (mode == settings::Upsampling::bilateral) {
       const float facing = std::max(glm::dot(normal, tap.normal), 0.0f);
       weight *= std::pow(facing, 32.0f) / (depth_epsilon + std::abs(depth - tap.depth));
       weight *= depth_epsilon;  // keeps weights O(1) so the vanishing test below is scale-free
@@ -208,15 +199,15 @@ glm::vec3 upsample(std::span<const UpsampleTap, 4> taps, float depth, const glm:
   return nearest ? nearest->value : glm::vec3(0.0f);
 }
 
-glm::vec3 tonemap(const glm::vec3& radiance, float exposure, Tonemap curve) {
+glm::vec3 tonemap(const glm::vec3& radiance, float exposure, settings::Tonemap curve) {
   const glm::vec3 x = glm::max(radiance * exposure, glm::vec3(0.0f));
   switch (curve) {
-    case Tonemap::aces: {  // Narkowicz's fit of the ACES filmic curve
+    case settings::Tonemap::aces: {  // Narkowicz's fit of the ACES filmic curve
       const glm::vec3 mapped = (x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f);
       return glm::clamp(mapped, 0.0f, 1.0f);
     }
-    case Tonemap::reinhard: return x / (1.0f + x);
-    case Tonemap::clamp: return glm::clamp(x, 0.0f, 1.0f);
+    case settings::Tonemap::reinhard: return x / (1.0f + x);
+    case settings::Tonemap::clamp: return glm::clamp(x, 0.0f, 1.0f);
   }
   return glm::clamp(x, 0.0f, 1.0f);
 }

@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include "render/frame_tables.h"
+#include "settings/render_settings.h"
 
 namespace proxygi::render {
 
@@ -46,8 +47,6 @@ void lookup_lighting_cube(const sh::LightingCubeMap& cube, const glm::vec3& norm
 //   averaged  eq. 15: I_i = κ_i V_i, κ_i = rot(D(s_i), d̂_i) · L̃   (D by the paper's polynomial fit)
 //   exact     eq. 17: I_i = R⁻¹ M(s_i) R L̃                        (M tabulated, render/exact_indirect.h)
 // point and averaged shade max(κ_i, 0) max(V_i · H(N), 0); exact shades max(I_i · H(N), 0).
-enum class IndirectOperator { point = 0, averaged = 1, exact = 2 };
-const char* indirect_operator_name(IndirectOperator op);
 
 struct IndirectResult {
   glm::vec3 irradiance{0.0f};   // normalized indirect E, rgb
@@ -55,7 +54,7 @@ struct IndirectResult {
 };
 IndirectResult accumulate_indirect(const FrameTables& tables, const glm::vec3& p, const glm::vec3& normal,
                                    std::span<const Sphere> spheres, float occlusion_dc,
-                                   IndirectOperator op = IndirectOperator::averaged);
+                                   settings::IndirectOperator op = settings::IndirectOperator::averaged);
 
 // The display texel that receiver (rx, ry) stands for (receivers.comp): the center of its k×k
 // block, or, when that is background (eye depth ≤ 0), the first covered texel of the block in
@@ -81,14 +80,12 @@ struct UpsampleTap {
   glm::vec3 normal{0.0f, 1.0f, 0.0f};
   float bilinear_weight = 0.0f;  // w^b
 };
-enum class UpsampleMode { bilateral = 0, bilinear = 1 };
 // Returns the interpolated value; when every weight vanishes (< 1e-6 of the bilinear total),
 // falls back to the valid tap with the closest depth.
-glm::vec3 upsample(std::span<const UpsampleTap, 4> taps, float depth, const glm::vec3& normal, UpsampleMode mode,
+glm::vec3 upsample(std::span<const UpsampleTap, 4> taps, float depth, const glm::vec3& normal, settings::Upsampling mode,
                    float depth_epsilon);
 
-enum class Tonemap { aces = 0, reinhard = 1, clamp = 2 };
 // Linear radiance × exposure → display-referred linear [0, 1] (before the sRGB encoding).
-glm::vec3 tonemap(const glm::vec3& radiance, float exposure, Tonemap curve);
+glm::vec3 tonemap(const glm::vec3& radiance, float exposure, settings::Tonemap curve);
 
 }  // namespace proxygi::render

@@ -24,6 +24,8 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "settings/render_settings.h"
+
 namespace proxygi::scene {
 
 // The only schema version this build reads and writes. Bump it on any incompatible change.
@@ -198,33 +200,8 @@ struct Camera {
   bool operator==(const Camera&) const = default;
 };
 
-enum class IndirectOperator { point, averaged, exact };
-enum class Exponential { hyb, ol };
-enum class Upsampling { bilateral, bilinear };
-enum class SplatMethod { raster, compute };
-enum class Tonemap { aces, reinhard, clamp };
-// image_space: the paper's method (proxy accumulation at 1/k receivers). vertex and
-// ambient_occlusion are the prior-work baselines of the speed-accuracy chart: SHEXP per receiver
-// vertex interpolated across triangles, and scalar AO from the same spheres.
-enum class ShadingMethod { image_space, vertex, ambient_occlusion };
-
-// Method settings (the paper's symbols in brackets).
-struct RenderSettings {
-  ShadingMethod method = ShadingMethod::image_space;
-  int sh_order = 4;              // n bands, n^2 coefficients; 3..6
-  int receiver_scale = 4;        // k: receivers at display size / k per axis; 1, 2, 4 or 8
-  float shadow_eta = 15.0f;      // [eta] sphere-of-influence radius / proxy radius, > 1
-  float indirect_eta = 10.0f;    // same for indirect accumulation, > 1
-  IndirectOperator indirect_operator = IndirectOperator::averaged;
-  Exponential exponential = Exponential::hyb;
-  float hyb_tau = 0.25f;         // HYB: halve until |f_hat| <= tau, > 0
-  Upsampling upsampling = Upsampling::bilateral;
-  SplatMethod splat = SplatMethod::compute;  // the gather measured faster on lavapipe (README)
-  bool indirect = true;
-  Tonemap tonemap = Tonemap::aces;
-  float exposure_ev = 0.0f;      // radiance is multiplied by 2^exposure_ev before the tonemap
-  bool operator==(const RenderSettings&) const = default;
-};
+// The render settings (method, SH order, k, η, τ, ...) are settings::RenderSettings: one
+// definition shared by the scene file, the GPU frame, the chart and the viewer.
 
 enum class OutputFormat { png, exr, mp4 };
 
@@ -246,7 +223,7 @@ struct Scene {
   Ground ground;
   std::vector<StaticMesh> static_meshes;
   Camera camera;
-  RenderSettings render;
+  settings::RenderSettings render;
   Output output;
   // Folder of the scene file that relative paths resolve against; not written to the file.
   // Empty for scenes built in code (paths then resolve against the working directory).

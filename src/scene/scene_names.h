@@ -20,21 +20,13 @@ inline constexpr Name<Environment::Type> kEnvironmentType[] = {
 inline constexpr Name<KeyframedCamera::Interpolation> kInterpolation[] = {
     {"linear", KeyframedCamera::Interpolation::linear},
     {"catmull_rom", KeyframedCamera::Interpolation::catmull_rom}};
-inline constexpr Name<IndirectOperator> kIndirectOperator[] = {
-    {"point", IndirectOperator::point},
-    {"averaged", IndirectOperator::averaged},
-    {"exact", IndirectOperator::exact}};
-inline constexpr Name<Exponential> kExponential[] = {{"hyb", Exponential::hyb},
-                                                     {"ol", Exponential::ol}};
-inline constexpr Name<Upsampling> kUpsampling[] = {{"bilateral", Upsampling::bilateral},
-                                                   {"bilinear", Upsampling::bilinear}};
-inline constexpr Name<SplatMethod> kSplatMethod[] = {{"raster", SplatMethod::raster},
-                                                     {"compute", SplatMethod::compute}};
-inline constexpr Name<ShadingMethod> kShadingMethod[] = {{"image", ShadingMethod::image_space},
-                                                         {"vertex", ShadingMethod::vertex},
-                                                         {"ao", ShadingMethod::ambient_occlusion}};
-inline constexpr Name<Tonemap> kTonemap[] = {
-    {"aces", Tonemap::aces}, {"reinhard", Tonemap::reinhard}, {"clamp", Tonemap::clamp}};
+// The render settings' names are defined with them (settings/render_settings.h).
+inline constexpr const auto& kIndirectOperator = settings::kIndirectOperatorNames;
+inline constexpr const auto& kExponential = settings::kExponentialNames;
+inline constexpr const auto& kUpsampling = settings::kUpsamplingNames;
+inline constexpr const auto& kSplatMethod = settings::kSplatMethodNames;
+inline constexpr const auto& kShadingMethod = settings::kShadingMethodNames;
+inline constexpr const auto& kTonemap = settings::kTonemapNames;
 inline constexpr Name<OutputFormat> kOutputFormat[] = {
     {"png", OutputFormat::png}, {"exr", OutputFormat::exr}, {"mp4", OutputFormat::mp4}};
 

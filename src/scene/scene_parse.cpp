@@ -8,6 +8,7 @@
 
 #include "base/atomic_file.h"
 #include "scene/json_reader.h"
+#include "settings/fields.h"
 #include "scene/scene_names.h"
 #include "scene/scene_validate.h"
 
@@ -195,22 +196,34 @@ Camera read_camera(const json& value, const std::string& path) {
   return c;
 }
 
-RenderSettings read_render(const json& value, const std::string& path) {
+// Every field of the settings table (settings/fields.h), by its kind; unknown keys are refused.
+settings::RenderSettings read_render(const json& value, const std::string& path) {
   ObjectReader r(value, path);
-  RenderSettings s;
-  s.method = r.enumeration("method", s.method, names::kShadingMethod);
-  s.sh_order = r.integer("sh_order", s.sh_order);
-  s.receiver_scale = r.integer("receiver_scale", s.receiver_scale);
-  s.shadow_eta = r.number("shadow_eta", s.shadow_eta);
-  s.indirect_eta = r.number("indirect_eta", s.indirect_eta);
-  s.indirect_operator = r.enumeration("indirect_operator", s.indirect_operator, names::kIndirectOperator);
-  s.exponential = r.enumeration("exponential", s.exponential, names::kExponential);
-  s.hyb_tau = r.number("hyb_tau", s.hyb_tau);
-  s.upsampling = r.enumeration("upsampling", s.upsampling, names::kUpsampling);
-  s.splat = r.enumeration("splat", s.splat, names::kSplatMethod);
-  s.indirect = r.boolean("indirect", s.indirect);
-  s.tonemap = r.enumeration("tonemap", s.tonemap, names::kTonemap);
-  s.exposure_ev = r.number("exposure_ev", s.exposure_ev);
+  settings::RenderSettings s;
+  for (const settings::Field& field : settings::fields()) {
+    const json* v = r.get(field.key);
+    if (v == nullptr) continue;
+    const std::string where = r.field(field.key);
+    switch (field.kind) {
+      case settings::FieldKind::boolean: field.set(s, detail::read_bool(*v, where) ? 1.0 : 0.0); break;
+      case settings::FieldKind::integer: field.set(s, double(detail::read_int(*v, where))); break;
+      case settings::FieldKind::real: field.set(s, double(detail::read_float(*v, where))); break;
+      case settings::FieldKind::choice: {
+        const std::string text = detail::read_string(*v, where);
+        const auto chosen = settings::choice_value(field, text);
+        if (!chosen) {
+          std::string known;
+          for (const settings::Choice& choice : field.choices) {
+            if (!known.empty()) known += ", ";
+            known += choice.name;
+          }
+          fail(where, "unknown value \"" + text + "\" (expected one of: " + known + ")");
+        }
+        field.set(s, double(*chosen));
+        break;
+      }
+    }
+  }
   r.finish();
   return s;
 }

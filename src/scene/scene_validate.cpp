@@ -8,6 +8,7 @@
 #include <string>
 
 #include "scene/json_reader.h"
+#include "settings/fields.h"
 #include "scene/scene_names.h"
 
 namespace proxygi::scene {
@@ -198,20 +199,9 @@ void validate_camera(const Camera& camera, int character_count) {
   }
 }
 
-void validate_render(const RenderSettings& r) {
-  if (r.sh_order < 3 || r.sh_order > 6) {
-    fail("render.sh_order", "must be in 3..6 (got " + std::to_string(r.sh_order) + ")");
-  }
-  const int k = r.receiver_scale;
-  if (k != 1 && k != 2 && k != 4 && k != 8) {
-    fail("render.receiver_scale", "must be 1, 2, 4 or 8 (got " + std::to_string(k) + ")");
-  }
-  finite(r.shadow_eta, "render.shadow_eta");
-  if (!(r.shadow_eta > 1.0f)) fail("render.shadow_eta", "must be > 1 (got " + show(r.shadow_eta) + ")");
-  finite(r.indirect_eta, "render.indirect_eta");
-  if (!(r.indirect_eta > 1.0f)) fail("render.indirect_eta", "must be > 1 (got " + show(r.indirect_eta) + ")");
-  positive(r.hyb_tau, "render.hyb_tau");
-  finite(r.exposure_ev, "render.exposure_ev");
+void validate_render(const settings::RenderSettings& r) {
+  for (const settings::Field& field : settings::fields())
+    if (auto reason = settings::check_value(field, field.get(r))) fail(join_path("render", field.key), *reason);
 }
 
 void validate_output(const Output& o) {

@@ -9,6 +9,7 @@
 
 #include "base/atomic_file.h"
 #include "scene/scene_names.h"
+#include "settings/fields.h"
 #include "scene/scene_validate.h"
 
 namespace proxygi::scene {
@@ -125,20 +126,19 @@ ojson camera_json(const Camera& camera) {
   return j;
 }
 
-ojson render_json(const RenderSettings& r) {
-  return {{"method", std::string(names::name_of(names::kShadingMethod, r.method))},
-          {"sh_order", r.sh_order},
-          {"receiver_scale", r.receiver_scale},
-          {"shadow_eta", number(r.shadow_eta)},
-          {"indirect_eta", number(r.indirect_eta)},
-          {"indirect_operator", std::string(names::name_of(names::kIndirectOperator, r.indirect_operator))},
-          {"exponential", std::string(names::name_of(names::kExponential, r.exponential))},
-          {"hyb_tau", number(r.hyb_tau)},
-          {"upsampling", std::string(names::name_of(names::kUpsampling, r.upsampling))},
-          {"splat", std::string(names::name_of(names::kSplatMethod, r.splat))},
-          {"indirect", r.indirect},
-          {"tonemap", std::string(names::name_of(names::kTonemap, r.tonemap))},
-          {"exposure_ev", number(r.exposure_ev)}};
+ojson render_json(const settings::RenderSettings& r) {
+  ojson j = ojson::object();
+  for (const settings::Field& field : settings::fields()) {
+    const double value = field.get(r);
+    const std::string key(field.key);
+    switch (field.kind) {
+      case settings::FieldKind::boolean: j[key] = value != 0.0; break;
+      case settings::FieldKind::integer: j[key] = int(value); break;
+      case settings::FieldKind::real: j[key] = number(float(value)); break;
+      case settings::FieldKind::choice: j[key] = std::string(settings::choice_name(field, int(value))); break;
+    }
+  }
+  return j;
 }
 
 ojson output_json(const Output& o) {

@@ -132,9 +132,9 @@ struct SingleProxy {
 };
 
 TEST(RenderIndirectTwin, EachOperatorMatchesItsDoubleOperatorForOneProxy) {
-  FrameTableSettings settings;
-  settings.order = 3;
-  settings.window = false;
+  settings::RenderSettings settings;
+  settings.sh_order = 3;
+  settings.sh_window = false;
   sh::RgbSh sky;
   sky.order = 3;
   // L̃ = L * clamped cosine: pick L so that L̃ = kLighting (times a per-channel factor).
@@ -156,16 +156,16 @@ TEST(RenderIndirectTwin, EachOperatorMatchesItsDoubleOperatorForOneProxy) {
     const Sphere sphere{glm::vec3(proxy.center), float(proxy.radius), albedo};
     const Eigen::MatrixXd rotation = sh::rotation_matrix(3, sh::rotation_between(d, {0.0, 0.0, 1.0}));
     struct Case {
-      IndirectOperator op;
+      settings::IndirectOperator op;
       Eigen::MatrixXd canonical;
       double tolerance;  // relative
     };
     // point: V table interpolation and float rounding only; exact: also M's interpolation
     // (< 1e-3 at 256 rows, see above); averaged: the paper's polynomial fit of D (< 1.5e-3
     // absolute per band, sh indirect_test) against numerically integrated D.
-    const Case cases[] = {{IndirectOperator::point, sh::point_indirect_operator(3, s), 1e-4},
-                          {IndirectOperator::exact, sh::exact_indirect_operator(3, s), 1e-3},
-                          {IndirectOperator::averaged, sh::averaged_indirect_operator(3, s), 5e-3}};
+    const Case cases[] = {{settings::IndirectOperator::point, sh::point_indirect_operator(3, s), 1e-4},
+                          {settings::IndirectOperator::exact, sh::exact_indirect_operator(3, s), 1e-3},
+                          {settings::IndirectOperator::averaged, sh::averaged_indirect_operator(3, s), 5e-3}};
     for (const Case& test : cases) {
       const IndirectResult twin = accumulate_indirect(tables, glm::vec3(0.0f), glm::vec3(normal), std::span<const Sphere>(&sphere, 1), 0.0f, test.op);
       for (int c = 0; c < 3; ++c) {
@@ -177,7 +177,7 @@ TEST(RenderIndirectTwin, EachOperatorMatchesItsDoubleOperatorForOneProxy) {
         const double expected = albedo[c] / kPi * std::max(shade, 0.0);
         ASSERT_GT(expected, 1e-3) << "the sample must be lit";
         EXPECT_NEAR(twin.irradiance[c], expected, test.tolerance * expected)
-            << indirect_operator_name(test.op) << " s=" << s << " channel " << c;
+            << settings::name_of(test.op) << " s=" << s << " channel " << c;
       }
     }
   }
@@ -186,8 +186,8 @@ TEST(RenderIndirectTwin, EachOperatorMatchesItsDoubleOperatorForOneProxy) {
 TEST(RenderIndirectTwin, AllOperatorsAgreeUnderConstantRadiance) {
   // Constant L̃: the proxy shines the same over its whole cap, so point, averaged and exact give
   // the same I = L̃_0 y_0 V (up to the D_0 fit, 1.7e-5 relative, and table rounding).
-  FrameTableSettings settings;
-  settings.order = 3;
+  settings::RenderSettings settings;
+  settings.sh_order = 3;
   sh::RgbSh sky;
   sky.order = 3;
   for (auto& channel : sky.channels) channel.assign(9, 0.0);
@@ -199,13 +199,13 @@ TEST(RenderIndirectTwin, AllOperatorsAgreeUnderConstantRadiance) {
   for (float x = -2.0f; x <= 2.0f; x += 0.25f)
     for (float z = -2.0f; z <= 2.0f; z += 0.5f) {
       const glm::vec3 p(x, 0.0f, z), n(0.0f, 1.0f, 0.0f);
-      const IndirectResult averaged = accumulate_indirect(tables, p, n, spheres, 1.0f, IndirectOperator::averaged);
-      for (IndirectOperator op : {IndirectOperator::point, IndirectOperator::exact}) {
+      const IndirectResult averaged = accumulate_indirect(tables, p, n, spheres, 1.0f, settings::IndirectOperator::averaged);
+      for (settings::IndirectOperator op : {settings::IndirectOperator::point, settings::IndirectOperator::exact}) {
         const IndirectResult other = accumulate_indirect(tables, p, n, spheres, 1.0f, op);
         EXPECT_NEAR(other.summed_solid_angle, averaged.summed_solid_angle, 1e-6f);
         for (int c = 0; c < 3; ++c)
           EXPECT_NEAR(other.irradiance[c], averaged.irradiance[c], 1e-4f * averaged.irradiance[c] + 1e-7f)
-              << indirect_operator_name(op) << " at " << x << "," << z;
+              << settings::name_of(op) << " at " << x << "," << z;
       }
       if (averaged.irradiance.r > 1e-3f) ++lit;
     }

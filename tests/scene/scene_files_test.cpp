@@ -148,7 +148,7 @@ TEST(SceneFiles, RoundTripEveryForm) {
   m.albedo = glm::vec3(0.3f, 0.2f, 0.1f);
   m.transform.rotation.euler_degrees = glm::vec3(90.0f, 0.0f, 12.5f);
   s.static_meshes.push_back(m);
-  s.render.tonemap = Tonemap::clamp;
+  s.render.tonemap = settings::Tonemap::clamp;
   s.render.exposure_ev = -0.7f;
   s.output.formats = {OutputFormat::mp4, OutputFormat::png, OutputFormat::exr};
   expect_round_trip(s, "a/b.json");

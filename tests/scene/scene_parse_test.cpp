@@ -129,19 +129,19 @@ TEST(SceneParse, EveryFieldOfTheFullScene) {
   EXPECT_FLOAT_EQ(s.camera.near_m, 0.2f);
   EXPECT_FLOAT_EQ(s.camera.far_m, 50.0f);
 
-  const RenderSettings& r = s.render;
+  const settings::RenderSettings& r = s.render;
   EXPECT_EQ(r.sh_order, 5);
   EXPECT_EQ(r.receiver_scale, 2);
   EXPECT_FLOAT_EQ(r.shadow_eta, 12.0f);
   EXPECT_FLOAT_EQ(r.indirect_eta, 8.0f);
-  EXPECT_EQ(r.indirect_operator, IndirectOperator::exact);
-  EXPECT_EQ(r.exponential, Exponential::ol);
+  EXPECT_EQ(r.indirect_operator, settings::IndirectOperator::exact);
+  EXPECT_EQ(r.exponential, settings::Exponential::ol);
   EXPECT_FLOAT_EQ(r.hyb_tau, 0.5f);
-  EXPECT_EQ(r.upsampling, Upsampling::bilinear);
-  EXPECT_EQ(r.splat, SplatMethod::compute);
-  EXPECT_EQ(r.method, ShadingMethod::vertex);
+  EXPECT_EQ(r.upsampling, settings::Upsampling::bilinear);
+  EXPECT_EQ(r.splat, settings::SplatMethod::compute);
+  EXPECT_EQ(r.method, settings::ShadingMethod::vertex);
   EXPECT_FALSE(r.indirect);
-  EXPECT_EQ(r.tonemap, Tonemap::reinhard);
+  EXPECT_EQ(r.tonemap, settings::Tonemap::reinhard);
   EXPECT_FLOAT_EQ(r.exposure_ev, -1.5f);
 
   const Output& o = s.output;
@@ -161,14 +161,14 @@ TEST(SceneParse, MinimalSceneTakesEveryDefault) {
   EXPECT_EQ(parse_ok(R"({"schema_version": 1})"), expected);
   // The documented defaults.
   EXPECT_EQ(expected.render.sh_order, 4);
-  EXPECT_EQ(expected.render.method, ShadingMethod::image_space);
+  EXPECT_EQ(expected.render.method, settings::ShadingMethod::image_space);
   EXPECT_EQ(expected.render.receiver_scale, 4);
   EXPECT_FLOAT_EQ(expected.render.shadow_eta, 15.0f);
   EXPECT_FLOAT_EQ(expected.render.indirect_eta, 10.0f);
-  EXPECT_EQ(expected.render.indirect_operator, IndirectOperator::averaged);
-  EXPECT_EQ(expected.render.exponential, Exponential::hyb);
+  EXPECT_EQ(expected.render.indirect_operator, settings::IndirectOperator::averaged);
+  EXPECT_EQ(expected.render.exponential, settings::Exponential::hyb);
   EXPECT_FLOAT_EQ(expected.render.hyb_tau, 0.25f);
-  EXPECT_EQ(expected.render.upsampling, Upsampling::bilateral);
+  EXPECT_EQ(expected.render.upsampling, settings::Upsampling::bilateral);
   EXPECT_TRUE(expected.render.indirect);
   EXPECT_EQ(expected.output.width, 512);
   EXPECT_EQ(expected.output.height, 512);

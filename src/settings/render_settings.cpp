@@ -1,0 +1,19 @@
+#include "settings/render_settings.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace proxygi::settings {
+
+bool is_receiver_scale(int k) { return std::find(kReceiverScales.begin(), kReceiverScales.end(), k) != kReceiverScales.end(); }
+
+float exposure_multiplier(const RenderSettings& settings) { return std::exp2(settings.exposure_ev); }
+
+std::string_view name_of(ShadingMethod value) { return name_of(kShadingMethodNames, value); }
+std::string_view name_of(IndirectOperator value) { return name_of(kIndirectOperatorNames, value); }
+std::string_view name_of(Exponential value) { return name_of(kExponentialNames, value); }
+std::string_view name_of(Upsampling value) { return name_of(kUpsamplingNames, value); }
+std::string_view name_of(SplatMethod value) { return name_of(kSplatMethodNames, value); }
+std::string_view name_of(Tonemap value) { return name_of(kTonemapNames, value); }
+
+}  // namespace proxygi::settings

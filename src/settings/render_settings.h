@@ -1,0 +1,93 @@
+#pragma once
+// The render settings: the one definition of every setting of the soft-GI frame, its enums, the
+// names the scene file and the UI use for them, and its limits. The scene file (render block),
+// the GPU frame, the chart, the studies and the viewer's panel all read this type; nothing else
+// redeclares a setting, an enum or a limit.
+//
+// Each setting is also described by a field (settings/fields.h): its key, kind, limits and what a
+// change of it needs the renderer to rebuild, so parsing, validation, writing, the UI and the
+// "change every field in place" test walk one table.
+//
+// Units: η in proxy radii, τ dimensionless, ε in meters of eye depth, exposure in EV (stops).
+#include <array>
+#include <string_view>
+#include <utility>
+
+namespace proxygi::settings {
+
+// What the frame computes per receiver (render.method):
+//   image_space        the paper's method: receivers at 1/k of the display, SHEXP shadows and
+//                      indirect light, bilateral upsampling
+//   vertex             the prior-work baseline: receivers are the mesh vertices (skinned
+//                      characters, a tessellated ground, static meshes), interpolated across
+//                      triangles by the rasterizer
+//   ambient_occlusion  scalar AO from the same spheres at the image-space receivers:
+//                      E = Π_i (1 − a_i) · E(N), no bounce light
+enum class ShadingMethod { image_space, vertex, ambient_occlusion };
+// How a proxy's radiance is formed from the order-3 irradiance (paper §5; render/shading.h).
+enum class IndirectOperator { point, averaged, exact };
+// SH exponential: HYB (OL after halving until |f̂| ≤ τ, then squarings) or OL alone.
+enum class Exponential { hyb, ol };
+enum class Upsampling { bilateral, bilinear };
+// How frame step 4 accumulates log-occlusion (same result either way): the tiled compute gather
+// or the paper's raster splat (image-space receivers only; other methods always gather).
+enum class SplatMethod { compute, raster };
+enum class Tonemap { aces, reinhard, clamp };
+
+// Limits, defined once.
+inline constexpr int kMinShOrder = 3;  // SH order n: n bands, n² coefficients
+inline constexpr int kMaxShOrder = 6;
+inline constexpr std::array<int, 4> kReceiverScales = {1, 2, 4, 8};  // k: receivers at 1/k resolution
+
+struct RenderSettings {
+  ShadingMethod method = ShadingMethod::image_space;
+  int sh_order = 4;             // kMinShOrder..kMaxShOrder
+  int receiver_scale = 4;       // k, one of kReceiverScales
+  float shadow_eta = 15.0f;     // [η] sphere of influence of shadows / proxy radius, > 1
+  float indirect_eta = 10.0f;   // same for indirect light, > 1
+  bool sh_window = true;        // ringing window cos(π l / 2h), h = 2n, on the lighting
+  IndirectOperator indirect_operator = IndirectOperator::averaged;
+  Exponential exponential = Exponential::hyb;
+  float hyb_tau = 0.25f;        // HYB: halve until |f̂| ≤ τ, > 0
+  Upsampling upsampling = Upsampling::bilateral;
+  float bilateral_depth_epsilon = 0.05f;  // ε of eq. 11, meters of eye depth, > 0
+  SplatMethod splat = SplatMethod::compute;  // the gather measured faster on lavapipe (README)
+  bool indirect = true;
+  Tonemap tonemap = Tonemap::aces;
+  float exposure_ev = 0.0f;     // radiance × 2^exposure_ev before the tonemap
+  bool operator==(const RenderSettings&) const = default;
+};
+
+bool is_receiver_scale(int k);
+float exposure_multiplier(const RenderSettings& settings);  // 2^exposure_ev
+
+// The names of each enum in files, on the command line and in the UI. The order is the order
+// errors list them in; every enumerator appears exactly once.
+template <class Enum>
+using Name = std::pair<std::string_view, Enum>;
+inline constexpr Name<ShadingMethod> kShadingMethodNames[] = {
+    {"image", ShadingMethod::image_space}, {"vertex", ShadingMethod::vertex}, {"ao", ShadingMethod::ambient_occlusion}};
+inline constexpr Name<IndirectOperator> kIndirectOperatorNames[] = {
+    {"point", IndirectOperator::point}, {"averaged", IndirectOperator::averaged}, {"exact", IndirectOperator::exact}};
+inline constexpr Name<Exponential> kExponentialNames[] = {{"hyb", Exponential::hyb}, {"ol", Exponential::ol}};
+inline constexpr Name<Upsampling> kUpsamplingNames[] = {{"bilateral", Upsampling::bilateral},
+                                                        {"bilinear", Upsampling::bilinear}};
+inline constexpr Name<SplatMethod> kSplatMethodNames[] = {{"raster", SplatMethod::raster},
+                                                          {"compute", SplatMethod::compute}};
+inline constexpr Name<Tonemap> kTonemapNames[] = {
+    {"aces", Tonemap::aces}, {"reinhard", Tonemap::reinhard}, {"clamp", Tonemap::clamp}};
+
+template <class Enum, std::size_t N>
+constexpr std::string_view name_of(const Name<Enum> (&table)[N], Enum value) {
+  for (const auto& [name, e] : table)
+    if (e == value) return name;
+  return "?";
+}
+std::string_view name_of(ShadingMethod value);
+std::string_view name_of(IndirectOperator value);
+std::string_view name_of(Exponential value);
+std::string_view name_of(Upsampling value);
+std::string_view name_of(SplatMethod value);
+std::string_view name_of(Tonemap value);
+
+}  // namespace proxygi::settings
