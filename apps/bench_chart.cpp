@@ -105,15 +105,14 @@ int run_bench_chart(const ChartArgs& args) {
     }
     if (args.references_only) continue;
     add_path_tracing_rows(chart.name, path_tracing, rows);
-    for (std::size_t i = 0; i < grid.size(); ++i) {
-      auto row = run_raster_method(*context, chart, grid[i], references, {args.timing_frames});
-      const std::string label = study::row_label(describe_setting(grid[i], chart.name));
-      if (!row) return fail_runtime("bench chart: " + chart.name + ", " + label + ": " + row.message());
-      if (!args.json)
-        std::fprintf(stderr, "\r  %s: %zu/%zu %-40s %8.2f ms  relMSE %.4g   ", chart.name.c_str(), i + 1, grid.size(),
-                     label.c_str(), row->milliseconds, row->relative_mse);
-      rows.push_back(*row);
-    }
+    const Status measured = run_raster_methods(
+        *context, chart, grid, references, {args.timing_frames}, [&](std::size_t i, const study::ChartRow& row) {
+          if (!args.json)
+            std::fprintf(stderr, "\r  %s: %zu/%zu %-40s %8.2f ms  relMSE %.4g   ", chart.name.c_str(), i + 1,
+                         grid.size(), study::row_label(row).c_str(), row.milliseconds, row.relative_mse);
+          rows.push_back(row);
+        });
+    if (!measured) return fail_runtime("bench chart: " + chart.name + ", " + measured.message());
     if (!args.json) std::fprintf(stderr, "\n");
   }
   if (args.references_only) {

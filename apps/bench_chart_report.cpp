@@ -118,11 +118,11 @@ nlohmann::json chart_report_json(const std::vector<study::ChartRow>& rows, const
   };
   out["goals"]["scene"] = summary;
   out["goals"]["path_tracing_50x"] = goal_json(study::path_tracing_goal(rows, summary));
-  out["goals"]["vertex_2x"] = goal_json(study::vertex_goal(rows, summary, scene::RenderSettings{}.sh_order));
+  out["goals"]["vertex_2x"] = goal_json(study::vertex_goal(rows, summary, settings::RenderSettings{}.sh_order));
   for (const std::string& scene : context.scenes)
     out["goals_per_scene"][scene] = {
         {"path_tracing_50x", goal_json(study::path_tracing_goal(rows, scene))},
-        {"vertex_2x", goal_json(study::vertex_goal(rows, scene, scene::RenderSettings{}.sh_order))}};
+        {"vertex_2x", goal_json(study::vertex_goal(rows, scene, settings::RenderSettings{}.sh_order))}};
   return out;
 }
 
@@ -132,7 +132,7 @@ std::string chart_summary_text(const std::vector<study::ChartRow>& rows, const C
   text << machine_line(context) << "\n\nGoals (scene " << scene << "):\n"
        << goal_line("proxy default vs guided path tracing, >= 50x less time at its error",
                     study::path_tracing_goal(rows, scene))
-       << goal_line("image space >= 2x faster than vertex-based at equal or lower error", study::vertex_goal(rows, scene, scene::RenderSettings{}.sh_order))
+       << goal_line("image space >= 2x faster than vertex-based at equal or lower error", study::vertex_goal(rows, scene, settings::RenderSettings{}.sh_order))
        << "\n" << study::to_markdown(rows, scene);
   return text.str();
 }
@@ -147,7 +147,7 @@ Status write_chart_report(const std::string& folder, const std::vector<study::Ch
 
   std::ostringstream markdown;
   markdown << "# Speed–accuracy chart (`proxygi bench chart`)\n\n" << chart_summary_text(rows, context);
-  const int order = scene::RenderSettings{}.sh_order;
+  const int order = settings::RenderSettings{}.sh_order;
   for (const std::string& scene : context.scenes)
     markdown << "\n## " << scene << "\n\n"
              << goal_line("50x", study::path_tracing_goal(rows, scene))

@@ -15,8 +15,9 @@
 
 #include "apps/bench_splat_stages.h"
 #include "apps/commands.h"
-#include "apps/frame_timing.h"
 #include "gpu/scene_renderer.h"
+#include "run/frame_loop.h"
+#include "world/world.h"
 #include "scene/scene_defaults.h"
 #include "scene/scene_names.h"
 
@@ -31,10 +32,10 @@ struct BenchOptions {
   std::string indirect_operator = "averaged";  // scene names (scene::names::kIndirectOperator)
 };
 
-scene::IndirectOperator indirect_operator(const std::string& name) {
+settings::IndirectOperator indirect_operator(const std::string& name) {
   for (const auto& [text, value] : scene::names::kIndirectOperator)
     if (text == name) return value;
-  return scene::IndirectOperator::averaged;  // unreachable: the option is checked
+  return settings::IndirectOperator::averaged;  // unreachable: the option is checked
 }
 
 struct ConfigResult {
@@ -50,30 +51,39 @@ struct ConfigResult {
   SplatStageTimes raster_stages;  // raster splat only
 };
 
-const char* splat_name(scene::SplatMethod method) {
-  return method == scene::SplatMethod::raster ? "raster" : "compute";
+const char* splat_name(settings::SplatMethod method) {
+  return method == settings::SplatMethod::raster ? "raster" : "compute";
 }
 
-Result<ConfigResult> run_config(gpu::Context& context, const std::string& name, scene::Scene scene, int scale,
-                                const BenchOptions& options, scene::SplatMethod splat = scene::SplatMethod::compute) {
-  scene.output.width = scene.output.height = options.size;
-  scene.render.receiver_scale = scale;
-  scene.render.splat = splat;
-  scene.render.indirect_operator = indirect_operator(options.indirect_operator);
-  auto renderer = gpu::SceneRenderer::create(context, scene, {assets_dir(), true});
+// One world per scene, loaded once: every setting of that scene renders it.
+Result<std::shared_ptr<const world::World>> load_world(const scene::Scene& scene) {
+  auto world = world::World::load(scene, {.assets_dir = assets_dir(), .load_rigs = true, .write_rig_cache = true});
+  if (!world) return world.error();
+  return std::shared_ptr<const world::World>(std::move(*world));
+}
+
+Result<ConfigResult> run_config(gpu::Context& context, const std::string& name,
+                                const std::shared_ptr<const world::World>& world, settings::RenderSettings render,
+                                int scale, const BenchOptions& options,
+                                settings::SplatMethod splat = settings::SplatMethod::compute) {
+  const scene::Scene& scene = world->scene();
+  render.receiver_scale = scale;
+  render.splat = splat;
+  render.indirect_operator = indirect_operator(options.indirect_operator);
+  auto renderer = gpu::SceneRenderer::create(context, world, render, std::uint32_t(options.size),
+                                             std::uint32_t(options.size));
   if (!renderer) return renderer.error();
   ConfigResult result;
   result.name = name;
-  result.method = std::string(scene::names::name_of(scene::names::kShadingMethod, scene.render.method));
+  result.method = std::string(settings::name_of(render.method));
   result.splat = splat_name(splat);
   result.receiver_scale = scale;
-  const gpu::FrameSettings& settings = (*renderer)->frame().settings();
-  result.receivers = settings.method == gpu::ShadingMethod::vertex
-                         ? settings.vertex_receivers
-                         : std::size_t(settings.receiver_width()) * settings.receiver_height();
+  const gpu::FrameConfig& config = (*renderer)->config();
+  result.receivers = config.render.method == settings::ShadingMethod::vertex ? config.vertex_receivers
+                                                                              : std::size_t(config.receiver_count());
   result.characters = scene.characters.size();
   const int first = scene.output.first_frame;
-  auto frame_ms = time_pipelined_frames(**renderer, first, options.frames);
+  auto frame_ms = run::time_pipelined_frames(**renderer, first, options.frames);
   if (!frame_ms) return frame_ms.error();
   result.frame_ms = *frame_ms;
 
@@ -88,8 +98,8 @@ Result<ConfigResult> run_config(gpu::Context& context, const std::string& name, 
   const double receivers = double(result.receivers);
   const double shadow_ms = result.passes.milliseconds[std::size_t(gpu::FramePass::shadow)];
   result.pairs_per_second = shadow_ms > 0.0 ? receivers * double(result.passes.proxies) / (shadow_ms * 1e-3) : 0.0;
-  if (splat == scene::SplatMethod::raster) {
-    auto stages = time_splat_stages(context, scene.render.sh_order, std::uint32_t(options.size), std::uint32_t(scale),
+  if (splat == settings::SplatMethod::raster) {
+    auto stages = time_splat_stages(context, render.sh_order, std::uint32_t(options.size), std::uint32_t(scale),
                                     options.frames);
     if (!stages) return stages.error();
     result.raster_stages = *stages;
@@ -100,25 +110,31 @@ Result<ConfigResult> run_config(gpu::Context& context, const std::string& name, 
 int run_bench_frame(const BenchOptions& options) {
   auto context = gpu::Context::create({.device_request = options.device});
   if (!context) return fail_runtime(context.message());
+  auto default_world = load_world(scene::default_scene());
+  if (!default_world) return fail_runtime("bench frame: default scene: " + default_world.message());
+  auto crowd_world = load_world(scene::crowd_scene());
+  if (!crowd_world) return fail_runtime("bench frame: crowd scene: " + crowd_world.message());
+  const settings::RenderSettings default_settings = (*default_world)->scene().render;
+  const settings::RenderSettings crowd_settings = (*crowd_world)->scene().render;
   std::vector<ConfigResult> results;
-  constexpr scene::SplatMethod kSplats[] = {scene::SplatMethod::compute, scene::SplatMethod::raster};
-  for (int scale : {1, 2, 4, 8})
-    for (scene::SplatMethod splat : kSplats) {
-      auto result = run_config(**context, "default", scene::default_scene(), scale, options, splat);
+  constexpr settings::SplatMethod kSplats[] = {settings::SplatMethod::compute, settings::SplatMethod::raster};
+  for (int scale : settings::kReceiverScales)
+    for (settings::SplatMethod splat : kSplats) {
+      auto result = run_config(**context, "default", *default_world, default_settings, scale, options, splat);
       if (!result)
         return fail_runtime("bench frame: default scene, 1/" + std::to_string(scale) + ", " + splat_name(splat) +
                             " splat: " + result.message());
       results.push_back(*result);
     }
-  for (auto method : {scene::ShadingMethod::vertex, scene::ShadingMethod::ambient_occlusion}) {
-    scene::Scene baseline = scene::default_scene();
-    baseline.render.method = method;
-    auto result = run_config(**context, "default", baseline, 4, options);
+  for (auto method : {settings::ShadingMethod::vertex, settings::ShadingMethod::ambient_occlusion}) {
+    settings::RenderSettings baseline = default_settings;
+    baseline.method = method;
+    auto result = run_config(**context, "default", *default_world, baseline, 4, options);
     if (!result) return fail_runtime("bench frame: default scene, baseline: " + result.message());
     results.push_back(*result);
   }
-  for (scene::SplatMethod splat : kSplats) {
-    auto crowd = run_config(**context, "crowd", scene::crowd_scene(), 4, options, splat);
+  for (settings::SplatMethod splat : kSplats) {
+    auto crowd = run_config(**context, "crowd", *crowd_world, crowd_settings, 4, options, splat);
     if (!crowd)
       return fail_runtime("bench frame: crowd scene, " + std::string(splat_name(splat)) + " splat: " + crowd.message());
     results.push_back(*crowd);
@@ -128,8 +144,8 @@ int run_bench_frame(const BenchOptions& options) {
   getrusage(RUSAGE_SELF, &usage);
   const double peak_mib = double(usage.ru_maxrss) / 1024.0;
   const auto& report = (*context)->report();
-  const scene::SplatMethod default_splat = scene::default_scene().render.splat;
-  const std::size_t column = default_splat == scene::SplatMethod::raster ? 1 : 0;  // results: compute, raster pairs
+  const settings::SplatMethod default_splat = scene::default_scene().render.splat;
+  const std::size_t column = default_splat == settings::SplatMethod::raster ? 1 : 0;  // results: compute, raster pairs
   const double k1 = results[0 + column].frame_ms, k4 = results[4 + column].frame_ms;
 
   if (options.json) {

@@ -32,7 +32,8 @@ Result<SplatStageTimes> time_splat_stages(gpu::Context& context, int order, std:
   const std::uint32_t receivers_side = (size + receiver_scale - 1) / receiver_scale;
   const VkDeviceSize receivers = VkDeviceSize(receivers_side) * receivers_side;
   gpu_layout::FrameConstants constants{};
-  constants.sizes = glm::uvec4(size, size, receivers_side, receivers_side);
+  constants.display_width = constants.display_height = size;
+  constants.receiver_width = constants.receiver_height = receivers_side;
   constants.view_projection = glm::mat4(1.0f);
   constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
   auto constant_buffer = gpu::create_buffer_with_data(

@@ -1,6 +1,7 @@
 #pragma once
 // The GPU rows of `proxygi bench chart`: every rasterized method and setting rendered through
 // gpu::SceneRenderer, timed (whole frames, pipelined) and scored against the chart references.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -14,11 +15,11 @@
 namespace proxygi::app {
 
 struct MethodSetting {
-  scene::ShadingMethod method = scene::ShadingMethod::image_space;
+  settings::ShadingMethod method = settings::ShadingMethod::image_space;
   int sh_order = 4;
   int receiver_scale = 4;
-  scene::Upsampling upsampling = scene::Upsampling::bilateral;
-  scene::IndirectOperator indirect = scene::IndirectOperator::averaged;
+  settings::Upsampling upsampling = settings::Upsampling::bilateral;
+  settings::IndirectOperator indirect = settings::IndirectOperator::averaged;
 };
 
 // The grid: the proxy method at SH orders 3–6 × receivers 1/1, 1/2, 1/4, 1/8 × bilateral
@@ -34,11 +35,12 @@ struct MethodRunOptions {
   int timing_frames = 4;  // pipelined frames timed after two warm-up frames
 };
 
-// Renders `chart` with `setting`: ms per frame from a pipelined run starting at the scene's
-// first frame, errors averaged over chart.frames (references[i] belongs to chart.frames[i]).
-Result<study::ChartRow> run_raster_method(gpu::Context& context, const study::ChartScene& chart,
-                                          const MethodSetting& setting,
-                                          const std::vector<study::FrameReference>& references,
-                                          const MethodRunOptions& options);
+// Renders `chart` with every setting of `grid` on one renderer, each setting applied in place
+// (run::sweep_settings: the scene's models are imported and its rigs obtained once): ms per frame
+// from a pipelined run starting at the scene's first frame, errors averaged over chart.frames
+// (references[i] belongs to chart.frames[i]). on_row gets each row as it is measured.
+Status run_raster_methods(gpu::Context& context, const study::ChartScene& chart, const std::vector<MethodSetting>& grid,
+                          const std::vector<study::FrameReference>& references, const MethodRunOptions& options,
+                          const std::function<void(std::size_t index, const study::ChartRow& row)>& on_row);
 
 }  // namespace proxygi::app

@@ -7,16 +7,16 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
-#include <deque>
 #include <memory>
 #include <optional>
 
 #include "apps/commands.h"
 #include "apps/record_output.h"
-#include "apps/record_plan.h"
 #include "apps/record_progress.h"
 #include "apps/record_video.h"
 #include "gpu/scene_renderer.h"
+#include "run/frame_loop.h"
+#include "run/frame_plan.h"
 #include "scene/camera.h"
 #include "scene/scene_defaults.h"
 #include "scene/scene_parse.h"
@@ -62,56 +62,47 @@ struct RecordPlan {
   int skipped = 0;
 };
 
-// Renders plan.frames with up to slot_count frames in flight: frame t+1 is prepared and
-// submitted before frame t's files are written. The renderer takes ring slots round-robin, so
-// finishing the oldest frame always frees the next slot, whatever the frame numbers.
+// Renders plan.frames with the renderer's ring of frames in flight (run::render_frames): frame
+// t+1 is prepared and submitted before frame t's files are written. The HDR readback is skipped
+// when no EXR is written.
 Status render_in_flight(gpu::SceneRenderer& renderer, const RecordPlan& plan, RecordProgress& progress) {
   const scene::Output& output = renderer.scene().output;
-  const std::size_t slots = std::max<std::size_t>(renderer.frame().slot_count(), 1);
-  std::deque<int> in_flight;
-  auto finish_oldest = [&]() -> Status {
-    const int frame = in_flight.front();
-    in_flight.pop_front();
-    auto finished = renderer.finish_frame(frame);
-    if (!finished) return finished.error();
-    if (Status s = write_frame_files(plan.dir, frame, finished->ldr, finished->hdr, output.width, output.height, plan.exr); !s)
+  run::FrameLoopOptions options;
+  options.output = gpu::FrameOutput::readback(plan.exr);
+  options.stop = &g_interrupted;
+  return run::render_frames(renderer, plan.frames, options, [&](gpu::FinishedFrame& finished) -> Status {
+    if (Status s = write_frame_files(plan.dir, finished.frame, finished.ldr, finished.hdr, output.width,
+                                     output.height, plan.exr);
+        !s)
       return s;
-    progress.frame_rendered(frame, finished->statistics.proxies, finished->statistics.cpu_prepare_ms);
+    progress.frame_rendered(finished.frame, finished.statistics.proxies, finished.statistics.cpu_prepare_ms);
     return {};
-  };
-  for (int frame : plan.frames) {
-    if (g_interrupted) break;
-    while (in_flight.size() >= slots)
-      if (Status s = finish_oldest(); !s) return s;
-    if (Status s = renderer.begin_frame(frame); !s) return s;
-    in_flight.push_back(frame);
-  }
-  while (!in_flight.empty())
-    if (Status s = finish_oldest(); !s) return s;
-  return {};
+  });
 }
 
 // --aov: one frame at a time, since the intermediate buffers hold only the latest frame.
 Status render_with_aovs(gpu::SceneRenderer& renderer, const RecordPlan& plan, RecordProgress& progress) {
   const scene::Scene& scene = renderer.scene();
-  for (int frame : plan.frames) {
-    if (g_interrupted) break;
-    auto finished = renderer.render(frame);
-    if (!finished) return finished.error();
-    if (Status s = write_frame_files(plan.dir, frame, finished->ldr, finished->hdr, scene.output.width,
+  run::FrameLoopOptions options;
+  options.output = gpu::FrameOutput::readback(plan.exr);
+  options.in_flight = 1;
+  options.stop = &g_interrupted;
+  return run::render_frames(renderer, plan.frames, options, [&](gpu::FinishedFrame& finished) -> Status {
+    const int frame = finished.frame;
+    if (Status s = write_frame_files(plan.dir, frame, finished.ldr, finished.hdr, scene.output.width,
                                      scene.output.height, plan.exr);
         !s)
       return s;
-    const auto camera = scene::evaluate_scene_camera(scene, scene::frame_time_s(scene.output, frame));
-    const image::ImageF final_frame = ldr_to_linear(finished->ldr, scene.output.width, scene.output.height);
-    if (Status s = write_aovs(plan.dir, frame, renderer.frame(), final_frame, finished->spheres, camera); !s) return s;
-    progress.frame_rendered(frame, finished->statistics.proxies, finished->statistics.cpu_prepare_ms);
-  }
-  return {};
+    const auto camera = scene::evaluate_scene_camera(scene, finished.time_s);
+    const image::ImageF final_frame = ldr_to_linear(finished.ldr, scene.output.width, scene.output.height);
+    if (Status s = write_aovs(plan.dir, frame, renderer.frame(), final_frame, finished.spheres, camera); !s) return s;
+    progress.frame_rendered(frame, finished.statistics.proxies, finished.statistics.cpu_prepare_ms);
+    return {};
+  });
 }
 
 // Encodes DIR/video.mp4 when every frame of the range is on disk. Missing ffmpeg only warns.
-int encode_when_complete(const RecordPlan& plan, const FrameRange& range, double fps, bool rendered_any) {
+int encode_when_complete(const RecordPlan& plan, const run::FrameRange& range, double fps, bool rendered_any) {
   for (int frame = range.first; frame <= range.last; ++frame)
     if (!frame_done(plan.dir, frame, false, false)) {
       std::fprintf(stderr, "record: frame %d is missing; video.mp4 not encoded (run again to finish)\n", frame);
@@ -137,19 +128,19 @@ int run_record(const RecordArgs& args) {
   if (args.width > 0) scene.output.width = args.width;
   if (args.height > 0) scene.output.height = args.height;
 
-  std::optional<FrameRange> requested;
+  std::optional<run::FrameRange> requested;
   if (!args.frames.empty()) {
-    auto range = parse_frame_range(args.frames);
+    auto range = run::parse_frame_range(args.frames);
     if (!range) return fail_bad_input(range.message());
     requested = *range;
   }
-  Shard shard;
+  run::Shard shard;
   if (!args.shard.empty()) {
-    auto parsed = parse_shard(args.shard);
+    auto parsed = run::parse_shard(args.shard);
     if (!parsed) return fail_bad_input(parsed.message());
     shard = *parsed;
   }
-  auto share = plan_frames(scene.output, requested, shard);
+  auto share = run::plan_frames(scene.output, requested, shard);
   if (!share) return fail_bad_input(share.message());
 
   RecordPlan plan;
@@ -196,7 +187,7 @@ int run_record(const RecordArgs& args) {
     std::fprintf(stderr, "record: shards do not encode video; when all shards are done, run again without --shard\n");
     return kExitOk;
   }
-  return encode_when_complete(plan, requested.value_or(scene_frame_range(scene.output)), scene.output.fps,
+  return encode_when_complete(plan, requested.value_or(run::scene_frame_range(scene.output)), scene.output.fps,
                               !plan.frames.empty());
 }
 

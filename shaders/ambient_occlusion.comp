@@ -20,13 +20,13 @@
 #define SH_COUNT (SH_ORDER * SH_ORDER)
 
 layout(local_size_x = kFrameLocalSize, local_size_y = kFrameLocalSize) in;
-layout(std140, set = 0, binding = 0) uniform Frame { FrameConstants frame; };
-layout(std430, set = 0, binding = 1) readonly buffer Receivers { Receiver receivers[]; };
-layout(std140, set = 0, binding = 2) uniform Proxies { ProxySphere proxies[kMaxProxies]; };
-layout(std430, set = 0, binding = 3) readonly buffer LightingCube { float lighting_cube[]; };  // r, g, b cubes
-layout(std430, set = 0, binding = 4) writeonly buffer Direct { vec4 direct[]; };
-layout(std430, set = 0, binding = 5) writeonly buffer Indirect { vec4 indirect[]; };
-layout(std430, set = 0, binding = 6) writeonly buffer Shaded { vec4 shaded[]; };
+layout(std140, set = 0, binding = kAoBindFrame) uniform Frame { FrameConstants frame; };
+layout(std430, set = 0, binding = kAoBindReceivers) readonly buffer Receivers { Receiver receivers[]; };
+layout(std140, set = 0, binding = kAoBindProxies) uniform Proxies { ProxySphere proxies[kMaxProxies]; };
+layout(std430, set = 0, binding = kAoBindLightingCube) readonly buffer LightingCube { float lighting_cube[]; };  // r, g, b cubes
+layout(std430, set = 0, binding = kAoBindDirect) writeonly buffer Direct { vec4 direct[]; };
+layout(std430, set = 0, binding = kAoBindIndirect) writeonly buffer Indirect { vec4 indirect[]; };
+layout(std430, set = 0, binding = kAoBindShaded) writeonly buffer Shaded { vec4 shaded[]; };
 
 #include "lighting_cube.glsl"
 
@@ -40,7 +40,7 @@ vec4 proxy_center_radius(uint i) { return proxies[i].center_radius; }
 
 void main() {
   uvec2 receiver = gl_GlobalInvocationID.xy;
-  uvec2 receiver_size = frame.sizes.zw;
+  uvec2 receiver_size = uvec2(frame.receiver_width, frame.receiver_height);
   bool inside = all(lessThan(receiver, receiver_size));
   uint index = receiver.y * receiver_size.x + receiver.x;
   Receiver r;
@@ -49,7 +49,7 @@ void main() {
   if (inside) r = receivers[index];
   bool valid = inside && r.position_depth.w > 0.0;
   vec3 p = r.position_depth.xyz;
-  TILE_CULL(proxy_center_radius, frame.counts.x, frame.shadow.x, p, valid);
+  TILE_CULL(proxy_center_radius, frame.proxy_count, frame.shadow_eta, p, valid);
   if (!inside) return;
   indirect[index] = vec4(0.0);
   if (!valid) {
@@ -58,9 +58,9 @@ void main() {
     return;
   }
   vec3 normal = r.normal.xyz;
-  float eta = frame.shadow.x;
+  float eta = frame.shadow_eta;
   float minimum_sine = 1.0 / eta;
-  int rows = int(frame.shadow.w);
+  int rows = int(frame.log_table_rows);
   float unoccluded = 1.0;
   for (uint t = 0u; t < tile_proxy_count; ++t) {
     vec4 sphere = proxies[tile_proxies[t]].center_radius;

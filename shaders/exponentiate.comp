@@ -12,16 +12,16 @@
 #define sh_square SH_EXPAND_JOIN(sh_square_, SH_ORDER)
 
 layout(local_size_x = kFrameLocalSize, local_size_y = kFrameLocalSize) in;
-layout(std140, set = 0, binding = 0) uniform Frame { FrameConstants frame; };
-layout(std430, set = 0, binding = 1) readonly buffer Receivers { Receiver receivers[]; };
-layout(std430, set = 0, binding = 2) readonly buffer LogOcclusion { float log_occlusion[]; };
-layout(std430, set = 0, binding = 3) readonly buffer OptimalLinear { vec2 optimal_linear[]; };  // (a, b) rows
-layout(std430, set = 0, binding = 4) readonly buffer LightingCube { float lighting_cube[]; };   // r, g, b cubes
-layout(std430, set = 0, binding = 5) writeonly buffer Direct { vec4 direct[]; };
+layout(std140, set = 0, binding = kExponentiateBindFrame) uniform Frame { FrameConstants frame; };
+layout(std430, set = 0, binding = kExponentiateBindReceivers) readonly buffer Receivers { Receiver receivers[]; };
+layout(std430, set = 0, binding = kExponentiateBindLogOcclusion) readonly buffer LogOcclusion { float log_occlusion[]; };
+layout(std430, set = 0, binding = kExponentiateBindOptimalLinear) readonly buffer OptimalLinear { vec2 optimal_linear[]; };  // (a, b) rows
+layout(std430, set = 0, binding = kExponentiateBindLightingCube) readonly buffer LightingCube { float lighting_cube[]; };   // r, g, b cubes
+layout(std430, set = 0, binding = kExponentiateBindDirect) writeonly buffer Direct { vec4 direct[]; };
 
 vec2 optimal_linear_lookup(float norm) {
-  int rows = int(frame.tables.y);
-  float position = clamp(norm / frame.tables.x, 0.0, 1.0) * float(rows - 1);
+  int rows = int(frame.optimal_linear_rows);
+  float position = clamp(norm / frame.optimal_linear_max_norm, 0.0, 1.0) * float(rows - 1);
   int row = min(int(position), rows - 2);
   float t = position - float(row);
   return optimal_linear[row] + t * (optimal_linear[row + 1] - optimal_linear[row]);
@@ -31,7 +31,7 @@ vec2 optimal_linear_lookup(float norm) {
 
 void main() {
   uvec2 receiver = gl_GlobalInvocationID.xy;
-  uvec2 receiver_size = frame.sizes.zw;
+  uvec2 receiver_size = uvec2(frame.receiver_width, frame.receiver_height);
   if (any(greaterThanEqual(receiver, receiver_size))) return;
   uint index = receiver.y * receiver_size.x + receiver.x;
   Receiver r = receivers[index];
@@ -55,7 +55,7 @@ void main() {
   }
   float dc = exp(0.28209479177387814 * f[0]);
   float norm = sqrt(norm_squared);
-  float tau = frame.shadow.z;
+  float tau = frame.hybrid_tau;
   int squarings = 0;
   float scale = 1.0;
   while (norm * scale > tau && squarings < 16) {

@@ -4,13 +4,13 @@
 // color texture (an sRGB image, decoded to linear by the sampler before filtering; CPU twin:
 // render/texture_sampling.h) in the BASE_COLOR_TEXTURE variants, the factor alone otherwise. With VERTEX_IRRADIANCE
 // (the vertex method) the second target holds the interpolated vertex irradiance E instead of
-// the normal (upsample_composite reads it there when counts.w == kCompositeDisplayIrradiance).
+// the normal (upsample_composite reads it there when frame.composite_mode == kCompositeDisplayIrradiance).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/layouts.h"
 
-layout(std140, set = 0, binding = 0) uniform Frame { FrameConstants frame; };
+layout(std140, set = 0, binding = kGbufferBindFrame) uniform Frame { FrameConstants frame; };
 #ifdef BASE_COLOR_TEXTURE
-layout(set = 0, binding = 5) uniform sampler2D base_color_texture;
+layout(set = 0, binding = kGbufferBindBaseColorTexture) uniform sampler2D base_color_texture;
 #endif
 layout(push_constant) uniform Push { GbufferPush push; };
 

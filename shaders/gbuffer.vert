@@ -8,17 +8,17 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared/layouts.h"
 
-layout(std140, set = 0, binding = 0) uniform Frame { FrameConstants frame; };
-layout(std430, set = 0, binding = 1) readonly buffer Positions { vec4 positions[]; };
-layout(std430, set = 0, binding = 2) readonly buffer Normals { vec4 normals[]; };
-layout(std430, set = 0, binding = 4) readonly buffer Uvs { vec2 uvs[]; };
+layout(std140, set = 0, binding = kGbufferBindFrame) uniform Frame { FrameConstants frame; };
+layout(std430, set = 0, binding = kGbufferBindPositions) readonly buffer Positions { vec4 positions[]; };
+layout(std430, set = 0, binding = kGbufferBindNormals) readonly buffer Normals { vec4 normals[]; };
+layout(std430, set = 0, binding = kGbufferBindUvs) readonly buffer Uvs { vec2 uvs[]; };
 layout(push_constant) uniform Push { GbufferPush push; };
 
 layout(location = 0) out vec3 world_position;
 layout(location = 1) out vec3 world_normal;
 layout(location = 3) out vec2 texture_coordinate;
 #ifdef VERTEX_IRRADIANCE
-layout(std430, set = 0, binding = 3) readonly buffer Shaded { vec4 shaded[]; };
+layout(std430, set = 0, binding = kGbufferBindShaded) readonly buffer Shaded { vec4 shaded[]; };
 layout(location = 2) out vec3 vertex_irradiance;
 #endif
 

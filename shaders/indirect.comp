@@ -14,14 +14,14 @@
 #include "sh/sh_basis.glsl"
 
 layout(local_size_x = kFrameLocalSize, local_size_y = kFrameLocalSize) in;
-layout(std140, set = 0, binding = 0) uniform Frame { FrameConstants frame; };
-layout(std430, set = 0, binding = 1) readonly buffer Receivers { Receiver receivers[]; };
-layout(std140, set = 0, binding = 2) uniform Proxies { ProxySphere proxies[kMaxProxies]; };
-layout(std430, set = 0, binding = 3) readonly buffer VisibilityTable { float visibility_table[]; };
-layout(std430, set = 0, binding = 4) readonly buffer Direct { vec4 direct[]; };
-layout(std430, set = 0, binding = 5) writeonly buffer Indirect { vec4 indirect[]; };
+layout(std140, set = 0, binding = kIndirectBindFrame) uniform Frame { FrameConstants frame; };
+layout(std430, set = 0, binding = kIndirectBindReceivers) readonly buffer Receivers { Receiver receivers[]; };
+layout(std140, set = 0, binding = kIndirectBindProxies) uniform Proxies { ProxySphere proxies[kMaxProxies]; };
+layout(std430, set = 0, binding = kIndirectBindVisibilityTable) readonly buffer VisibilityTable { float visibility_table[]; };
+layout(std430, set = 0, binding = kIndirectBindDirect) readonly buffer Direct { vec4 direct[]; };
+layout(std430, set = 0, binding = kIndirectBindIndirect) writeonly buffer Indirect { vec4 indirect[]; };
 // What upsampling reads per tap, packed into one vec4: (E_direct + E_indirect, eye depth).
-layout(std430, set = 0, binding = 6) writeonly buffer Shaded { vec4 shaded[]; };
+layout(std430, set = 0, binding = kIndirectBindShaded) writeonly buffer Shaded { vec4 shaded[]; };
 
 #ifndef INDIRECT_OPERATOR
 #error "compile with -DINDIRECT_OPERATOR=0 (point), 1 (averaged) or 2 (exact)"
@@ -40,16 +40,16 @@ vec4 proxy_center_radius(uint i) { return proxies[i].center_radius; }
 
 void main() {
   uvec2 receiver = gl_GlobalInvocationID.xy;
-  uvec2 receiver_size = frame.sizes.zw;
+  uvec2 receiver_size = uvec2(frame.receiver_width, frame.receiver_height);
   bool inside = all(lessThan(receiver, receiver_size));
   uint index = receiver.y * receiver_size.x + receiver.x;
   Receiver r;
   r.position_depth = vec4(0.0);
   r.normal = vec4(0.0, 1.0, 0.0, 0.0);
   if (inside) r = receivers[index];
-  bool valid = inside && r.position_depth.w > 0.0 && frame.output_params.w != 0.0;
+  bool valid = inside && r.position_depth.w > 0.0 && frame.indirect_enabled != 0u;
   vec3 p = r.position_depth.xyz;
-  TILE_CULL(proxy_center_radius, frame.counts.x, frame.shadow.y, p, valid);
+  TILE_CULL(proxy_center_radius, frame.proxy_count, frame.indirect_eta, p, valid);
   if (!inside) return;
   if (!valid) {
     indirect[index] = vec4(0.0);
@@ -60,9 +60,9 @@ void main() {
   float normal_basis[9];
   sh_eval_basis_3(normal, normal_basis);
   const float cosine[3] = float[](0.886226925, 1.023326708, 0.495415912);
-  float eta = frame.shadow.y;
+  float eta = frame.indirect_eta;
   float minimum_sine = 1.0 / eta;
-  int rows = int(frame.tables.z);
+  int rows = int(frame.visibility_table_rows);
   vec3 summed = vec3(0.0);
   float solid_angle_sum = 0.0;
   for (uint t = 0u; t < tile_proxy_count; ++t) {

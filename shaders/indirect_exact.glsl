@@ -9,7 +9,7 @@
 #define PROXYGI_INDIRECT_EXACT_GLSL
 
 // M(s) rows over s ∈ [0, 1] (sh::ExactIndirectTable): 81 floats a row, M_jk at j * 9 + k.
-layout(std430, set = 0, binding = 7) readonly buffer ExactIndirectTable { float exact_table[]; };
+layout(std430, set = 0, binding = kIndirectBindExactTable) readonly buffer ExactIndirectTable { float exact_table[]; };
 
 void exact_indirect_weights(float sine, vec3 direction, vec3 normal, out float weights[9]) {
   float sign_z = direction.z >= 0.0 ? 1.0 : -1.0;

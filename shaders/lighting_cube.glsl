@@ -21,7 +21,7 @@ CubeTaps lighting_cube_taps(int channel, vec3 n) {
   } else {
     face = n.z >= 0.0 ? 4 : 5; major = a.z; sc = n.z >= 0.0 ? n.x : -n.x; tc = -n.y;
   }
-  int size = int(frame.tables.w);
+  int size = int(frame.lighting_cube_face_size);
   float u = clamp((0.5 * (sc / major + 1.0)) * float(size) - 0.5, 0.0, float(size - 1));
   float v = clamp((0.5 * (tc / major + 1.0)) * float(size) - 0.5, 0.0, float(size - 1));
   int x0 = min(int(u), size - 1), y0 = min(int(v), size - 1);

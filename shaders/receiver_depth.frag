@@ -6,12 +6,12 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared/layouts.h"
 
-layout(std140, set = 0, binding = 0) uniform Frame { FrameConstants frame; };
-layout(std430, set = 0, binding = 1) readonly buffer Receivers { Receiver receivers[]; };
+layout(std140, set = 0, binding = kSplatBindFrame) uniform Frame { FrameConstants frame; };
+layout(std430, set = 0, binding = kSplatBindReceivers) readonly buffer Receivers { Receiver receivers[]; };
 
 void main() {
   uvec2 pixel = uvec2(gl_FragCoord.xy);
-  Receiver r = receivers[pixel.y * frame.sizes.z + pixel.x];
+  Receiver r = receivers[pixel.y * frame.receiver_width + pixel.x];
   float depth = 1.0;
   if (r.position_depth.w > 0.0) {
     vec4 clip = frame.view_projection * vec4(r.position_depth.xyz, 1.0);

@@ -6,17 +6,17 @@
 #include "frame_common.glsl"
 
 layout(local_size_x = kFrameLocalSize, local_size_y = kFrameLocalSize) in;
-layout(std140, set = 0, binding = 0) uniform Frame { FrameConstants frame; };
-layout(set = 0, binding = 1, rgba32f) uniform readonly image2D position_depth_image;
-layout(set = 0, binding = 2, rgba32f) uniform readonly image2D normal_image;
-layout(std430, set = 0, binding = 3) writeonly buffer Receivers { Receiver receivers[]; };
+layout(std140, set = 0, binding = kReceiversBindFrame) uniform Frame { FrameConstants frame; };
+layout(set = 0, binding = kReceiversBindPositionDepth, rgba32f) uniform readonly image2D position_depth_image;
+layout(set = 0, binding = kReceiversBindNormal, rgba32f) uniform readonly image2D normal_image;
+layout(std430, set = 0, binding = kReceiversBindReceivers) writeonly buffer Receivers { Receiver receivers[]; };
 
 void main() {
   uvec2 receiver = gl_GlobalInvocationID.xy;
-  uvec2 receiver_size = frame.sizes.zw;
+  uvec2 receiver_size = uvec2(frame.receiver_width, frame.receiver_height);
   if (any(greaterThanEqual(receiver, receiver_size))) return;
-  uint k = frame.counts.y;
-  ivec2 display_size = ivec2(frame.sizes.xy);
+  uint k = frame.receiver_scale;
+  ivec2 display_size = ivec2(uvec2(frame.display_width, frame.display_height));
   ivec2 origin = ivec2(receiver * k);
   ivec2 center = min(origin + ivec2(k / 2u), display_size - 1);
   ivec2 chosen = center;

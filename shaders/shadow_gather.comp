@@ -14,17 +14,17 @@
 #define sh_eval_basis SH_EXPAND_JOIN(sh_eval_basis_, SH_ORDER)
 
 layout(local_size_x = kFrameLocalSize, local_size_y = kFrameLocalSize) in;
-layout(std140, set = 0, binding = 0) uniform Frame { FrameConstants frame; };
-layout(std430, set = 0, binding = 1) readonly buffer Receivers { Receiver receivers[]; };
-layout(std140, set = 0, binding = 2) uniform Proxies { ProxySphere proxies[kMaxProxies]; };
-layout(std430, set = 0, binding = 3) readonly buffer LogTable { float log_table[]; };
-layout(std430, set = 0, binding = 4) writeonly buffer LogOcclusion { float log_occlusion[]; };
+layout(std140, set = 0, binding = kShadowBindFrame) uniform Frame { FrameConstants frame; };
+layout(std430, set = 0, binding = kShadowBindReceivers) readonly buffer Receivers { Receiver receivers[]; };
+layout(std140, set = 0, binding = kShadowBindProxies) uniform Proxies { ProxySphere proxies[kMaxProxies]; };
+layout(std430, set = 0, binding = kShadowBindLogTable) readonly buffer LogTable { float log_table[]; };
+layout(std430, set = 0, binding = kShadowBindLogOcclusion) writeonly buffer LogOcclusion { float log_occlusion[]; };
 
 vec4 proxy_center_radius(uint i) { return proxies[i].center_radius; }
 
 void main() {
   uvec2 receiver = gl_GlobalInvocationID.xy;
-  uvec2 receiver_size = frame.sizes.zw;
+  uvec2 receiver_size = uvec2(frame.receiver_width, frame.receiver_height);
   bool inside = all(lessThan(receiver, receiver_size));
   uint index = receiver.y * receiver_size.x + receiver.x;
   Receiver r;
@@ -33,20 +33,20 @@ void main() {
   if (inside) r = receivers[index];
   bool valid = inside && r.position_depth.w > 0.0;
   vec3 p = r.position_depth.xyz;
-  TILE_CULL(proxy_center_radius, frame.counts.x, frame.shadow.x, p, valid);
+  TILE_CULL(proxy_center_radius, frame.proxy_count, frame.shadow_eta, p, valid);
   if (!inside) return;
 
   float f[SH_COUNT];
   for (int i = 0; i < SH_COUNT; ++i) f[i] = 0.0;
   if (valid) {
     vec3 normal = r.normal.xyz;
-    float minimum_sine = 1.0 / frame.shadow.x;
-    int rows = int(frame.shadow.w);
+    float minimum_sine = 1.0 / frame.shadow_eta;
+    int rows = int(frame.log_table_rows);
     for (uint t = 0u; t < tile_proxy_count; ++t) {
       vec4 sphere = proxies[tile_proxies[t]].center_radius;
       // Cheap reject before the rules: outside the sphere of influence η·r.
       vec3 offset = sphere.xyz - p;
-      float reach = frame.shadow.x * sphere.w;
+      float reach = frame.shadow_eta * sphere.w;
       if (dot(offset, offset) >= reach * reach) continue;
       vec3 direction;
       float sine;

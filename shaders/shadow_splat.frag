@@ -17,9 +17,9 @@
 
 // Depth and stencil are read only: the depth test may run before the shader even with discard.
 layout(early_fragment_tests) in;
-layout(std140, set = 0, binding = 0) uniform Frame { FrameConstants frame; };
-layout(std430, set = 0, binding = 1) readonly buffer Receivers { Receiver receivers[]; };
-layout(std430, set = 0, binding = 3) readonly buffer LogTable { float log_table[]; };
+layout(std140, set = 0, binding = kSplatBindFrame) uniform Frame { FrameConstants frame; };
+layout(std430, set = 0, binding = kSplatBindReceivers) readonly buffer Receivers { Receiver receivers[]; };
+layout(std430, set = 0, binding = kSplatBindLogTable) readonly buffer LogTable { float log_table[]; };
 layout(push_constant) uniform Push { SplatPush push; };
 
 layout(location = 0) flat in vec4 sphere;
@@ -85,19 +85,19 @@ float f[SH_COUNT];
 
 void main() {
   uvec2 pixel = uvec2(gl_FragCoord.xy);
-  Receiver r = receivers[pixel.y * frame.sizes.z + pixel.x];
+  Receiver r = receivers[pixel.y * frame.receiver_width + pixel.x];
   vec3 p = r.position_depth.xyz;
   // The depth test kept receivers in front of the back surface; drop those outside η·r.
   vec3 offset = sphere.xyz - p;
-  float reach = frame.shadow.x * sphere.w;
+  float reach = frame.shadow_eta * sphere.w;
   if (r.position_depth.w <= 0.0 || dot(offset, offset) >= reach * reach) discard;
   vec3 direction;
   float sine;
-  if (!proxy_seen_from(p, r.normal.xyz, sphere.xyz, sphere.w, direction, sine) || sine <= 1.0 / frame.shadow.x)
+  if (!proxy_seen_from(p, r.normal.xyz, sphere.xyz, sphere.w, direction, sine) || sine <= 1.0 / frame.shadow_eta)
     discard;
   float basis[SH_COUNT];
   sh_eval_basis(direction, basis);
-  int rows = int(frame.shadow.w);
+  int rows = int(frame.log_table_rows);
   for (int l = 0; l < SH_ORDER; ++l) {
     float zonal;
     ZONAL_LOOKUP(log_table, rows, SH_ORDER, sine, l, zonal);

@@ -8,14 +8,14 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared/layouts.h"
 
-layout(std140, set = 0, binding = 0) uniform Frame { FrameConstants frame; };
-layout(std140, set = 0, binding = 2) uniform Proxies { ProxySphere proxies[kMaxProxies]; };
-layout(std430, set = 0, binding = 4) readonly buffer BoundingMesh { vec4 bounding_mesh[]; };  // triangle list
+layout(std140, set = 0, binding = kSplatBindFrame) uniform Frame { FrameConstants frame; };
+layout(std140, set = 0, binding = kSplatBindProxies) uniform Proxies { ProxySphere proxies[kMaxProxies]; };
+layout(std430, set = 0, binding = kSplatBindBoundingMesh) readonly buffer BoundingMesh { vec4 bounding_mesh[]; };  // triangle list
 
 layout(location = 0) flat out vec4 sphere;  // proxy center (m), radius (m)
 
 void main() {
   sphere = proxies[gl_InstanceIndex].center_radius;
-  vec3 world = sphere.xyz + (frame.shadow.x * sphere.w) * bounding_mesh[gl_VertexIndex].xyz;
+  vec3 world = sphere.xyz + (frame.shadow_eta * sphere.w) * bounding_mesh[gl_VertexIndex].xyz;
   gl_Position = frame.view_projection * vec4(world, 1.0);
 }

@@ -7,17 +7,17 @@
 
 layout(local_size_x = kSkinLocalSize) in;
 layout(push_constant) uniform Push { SkinPush push; };
-layout(std430, set = 0, binding = 0) readonly buffer Positions { float bind_positions[]; };
-layout(std430, set = 0, binding = 1) readonly buffer Normals { float bind_normals[]; };
-layout(std430, set = 0, binding = 2) readonly buffer Joints { uint packed_joints[]; };
-layout(std430, set = 0, binding = 3) readonly buffer Weights { float weights[]; };
-layout(std430, set = 0, binding = 4) readonly buffer SkinMatrices { mat4 skin_matrices[]; };
-layout(std430, set = 0, binding = 5) readonly buffer NormalMatrices { mat4 normal_matrices[]; };
-layout(std430, set = 0, binding = 6) writeonly buffer OutPositions { vec4 out_positions[]; };
-layout(std430, set = 0, binding = 7) writeonly buffer OutNormals { vec4 out_normals[]; };
-layout(std430, set = 0, binding = 8) readonly buffer PositionDeltas { float position_deltas[]; };
-layout(std430, set = 0, binding = 9) readonly buffer NormalDeltas { float normal_deltas[]; };
-layout(std430, set = 0, binding = 10) readonly buffer MorphWeights { float morph_weights[]; };
+layout(std430, set = 0, binding = kSkinBindBindPositions) readonly buffer Positions { float bind_positions[]; };
+layout(std430, set = 0, binding = kSkinBindBindNormals) readonly buffer Normals { float bind_normals[]; };
+layout(std430, set = 0, binding = kSkinBindJoints) readonly buffer Joints { uint packed_joints[]; };
+layout(std430, set = 0, binding = kSkinBindWeights) readonly buffer Weights { float weights[]; };
+layout(std430, set = 0, binding = kSkinBindSkinMatrices) readonly buffer SkinMatrices { mat4 skin_matrices[]; };
+layout(std430, set = 0, binding = kSkinBindNormalMatrices) readonly buffer NormalMatrices { mat4 normal_matrices[]; };
+layout(std430, set = 0, binding = kSkinBindOutPositions) writeonly buffer OutPositions { vec4 out_positions[]; };
+layout(std430, set = 0, binding = kSkinBindOutNormals) writeonly buffer OutNormals { vec4 out_normals[]; };
+layout(std430, set = 0, binding = kSkinBindPositionDeltas) readonly buffer PositionDeltas { float position_deltas[]; };
+layout(std430, set = 0, binding = kSkinBindNormalDeltas) readonly buffer NormalDeltas { float normal_deltas[]; };
+layout(std430, set = 0, binding = kSkinBindMorphWeights) readonly buffer MorphWeights { float morph_weights[]; };
 
 uint palette_index(uint flat_index) {
   uint word = packed_joints[flat_index >> 1];

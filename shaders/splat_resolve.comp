@@ -10,35 +10,35 @@
 #define IMAGES PROXYGI_SPLAT_TARGETS(SH_ORDER)  // a last, all-padding target is not read
 
 layout(local_size_x = kFrameLocalSize, local_size_y = kFrameLocalSize) in;
-layout(std140, set = 0, binding = 0) uniform Frame { FrameConstants frame; };
-layout(std430, set = 0, binding = 1) writeonly buffer LogOcclusion { float log_occlusion[]; };
-layout(set = 0, binding = 2, rgba32f) uniform readonly image2D target0;
+layout(std140, set = 0, binding = kResolveBindFrame) uniform Frame { FrameConstants frame; };
+layout(std430, set = 0, binding = kResolveBindLogOcclusion) writeonly buffer LogOcclusion { float log_occlusion[]; };
+layout(set = 0, binding = kResolveBindFirstTarget + 0u, rgba32f) uniform readonly image2D target0;
 #if IMAGES > 1
-layout(set = 0, binding = 3, rgba32f) uniform readonly image2D target1;
+layout(set = 0, binding = kResolveBindFirstTarget + 1u, rgba32f) uniform readonly image2D target1;
 #endif
 #if IMAGES > 2
-layout(set = 0, binding = 4, rgba32f) uniform readonly image2D target2;
+layout(set = 0, binding = kResolveBindFirstTarget + 2u, rgba32f) uniform readonly image2D target2;
 #endif
 #if IMAGES > 3
-layout(set = 0, binding = 5, rgba32f) uniform readonly image2D target3;
+layout(set = 0, binding = kResolveBindFirstTarget + 3u, rgba32f) uniform readonly image2D target3;
 #endif
 #if IMAGES > 4
-layout(set = 0, binding = 6, rgba32f) uniform readonly image2D target4;
+layout(set = 0, binding = kResolveBindFirstTarget + 4u, rgba32f) uniform readonly image2D target4;
 #endif
 #if IMAGES > 5
-layout(set = 0, binding = 7, rgba32f) uniform readonly image2D target5;
+layout(set = 0, binding = kResolveBindFirstTarget + 5u, rgba32f) uniform readonly image2D target5;
 #endif
 #if IMAGES > 6
-layout(set = 0, binding = 8, rgba32f) uniform readonly image2D target6;
+layout(set = 0, binding = kResolveBindFirstTarget + 6u, rgba32f) uniform readonly image2D target6;
 #endif
 #if IMAGES > 7
-layout(set = 0, binding = 9, rgba32f) uniform readonly image2D target7;
+layout(set = 0, binding = kResolveBindFirstTarget + 7u, rgba32f) uniform readonly image2D target7;
 #endif
 #if IMAGES > 8
-layout(set = 0, binding = 10, rgba32f) uniform readonly image2D target8;
+layout(set = 0, binding = kResolveBindFirstTarget + 8u, rgba32f) uniform readonly image2D target8;
 #endif
 #if IMAGES > 9
-layout(set = 0, binding = 11, rgba32f) uniform readonly image2D target9;
+layout(set = 0, binding = kResolveBindFirstTarget + 9u, rgba32f) uniform readonly image2D target9;
 #endif
 
 uint base;
@@ -52,9 +52,9 @@ ivec2 texel;
 
 void main() {
   uvec2 receiver = gl_GlobalInvocationID.xy;
-  if (any(greaterThanEqual(receiver, frame.sizes.zw))) return;
+  if (any(greaterThanEqual(receiver, uvec2(frame.receiver_width, frame.receiver_height)))) return;
   texel = ivec2(receiver);
-  base = (receiver.y * frame.sizes.z + receiver.x) * uint(SH_COUNT);
+  base = (receiver.y * frame.receiver_width + receiver.x) * uint(SH_COUNT);
   RESOLVE(0)
 #if IMAGES > 1
   RESOLVE(1)

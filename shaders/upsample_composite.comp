@@ -6,23 +6,23 @@
 // bilinear; where every weight vanishes, the valid tap nearest in depth (written as an AOV).
 // Step 8: radiance = albedo/π · E on covered pixels, the environment along the view ray
 // elsewhere; HDR linear out and tonemapped sRGB 8-bit out (packed RGBA8).
-// Vertex method (counts.w == kCompositeDisplayIrradiance): step 7 is the rasterizer's
+// Vertex method (frame.composite_mode == kCompositeDisplayIrradiance): step 7 is the rasterizer's
 // interpolation of the vertex irradiance, which the G-buffer's second target already holds.
 // CPU twins: render::upsample, render::tonemap and image::linear_to_srgb.
 #extension GL_GOOGLE_include_directive : require
 #include "frame_common.glsl"
 
 layout(local_size_x = kFrameLocalSize, local_size_y = kFrameLocalSize) in;
-layout(std140, set = 0, binding = 0) uniform Frame { FrameConstants frame; };
-layout(set = 0, binding = 1, rgba32f) uniform readonly image2D position_depth_image;
-layout(set = 0, binding = 2, rgba32f) uniform readonly image2D normal_image;
-layout(std430, set = 0, binding = 3) readonly buffer Receivers { Receiver receivers[]; };
-layout(std430, set = 0, binding = 4) readonly buffer Shaded { vec4 shaded[]; };  // (E, eye depth)
-layout(std430, set = 0, binding = 5) writeonly buffer Irradiance { vec4 irradiance[]; };
-layout(set = 0, binding = 6, rgba32f) uniform readonly image2D albedo_image;
-layout(std430, set = 0, binding = 7) readonly buffer Environment { vec4 environment[]; };
-layout(std430, set = 0, binding = 8) writeonly buffer Hdr { vec4 hdr[]; };
-layout(std430, set = 0, binding = 9) writeonly buffer Ldr { uint ldr[]; };
+layout(std140, set = 0, binding = kCompositeBindFrame) uniform Frame { FrameConstants frame; };
+layout(set = 0, binding = kCompositeBindPositionDepth, rgba32f) uniform readonly image2D position_depth_image;
+layout(set = 0, binding = kCompositeBindNormal, rgba32f) uniform readonly image2D normal_image;
+layout(std430, set = 0, binding = kCompositeBindReceivers) readonly buffer Receivers { Receiver receivers[]; };
+layout(std430, set = 0, binding = kCompositeBindShaded) readonly buffer Shaded { vec4 shaded[]; };  // (E, eye depth)
+layout(std430, set = 0, binding = kCompositeBindIrradiance) writeonly buffer Irradiance { vec4 irradiance[]; };
+layout(set = 0, binding = kCompositeBindAlbedo, rgba32f) uniform readonly image2D albedo_image;
+layout(std430, set = 0, binding = kCompositeBindEnvironment) readonly buffer Environment { vec4 environment[]; };
+layout(std430, set = 0, binding = kCompositeBindHdr) writeonly buffer Hdr { vec4 hdr[]; };
+layout(std430, set = 0, binding = kCompositeBindLdr) writeonly buffer Ldr { uint ldr[]; };
 layout(push_constant) uniform Push { CompositePush push; };
 
 vec3 environment_radiance(vec3 direction) {
@@ -37,10 +37,10 @@ vec3 environment_radiance(vec3 direction) {
 }
 
 vec3 tonemap(vec3 radiance) {
-  vec3 x = max(radiance * frame.output_params.x, vec3(0.0));
-  uint curve = uint(frame.output_params.y);
-  if (curve == 0u) return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
-  if (curve == 1u) return x / (1.0 + x);
+  vec3 x = max(radiance * frame.exposure, vec3(0.0));
+  uint curve = frame.tonemap;
+  if (curve == kTonemapAces) return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
+  if (curve == kTonemapReinhard) return x / (1.0 + x);
   return clamp(x, 0.0, 1.0);
 }
 
@@ -51,14 +51,14 @@ float linear_to_srgb(float value) {
 // Step 7 for a covered pixel.
 vec3 upsampled_irradiance(uvec2 pixel, float depth) {
   vec3 normal = imageLoad(normal_image, ivec2(pixel)).xyz;
-  ivec2 receiver_size = ivec2(frame.sizes.zw);
-  float k = float(frame.counts.y);
+  ivec2 receiver_size = ivec2(uvec2(frame.receiver_width, frame.receiver_height));
+  float k = float(frame.receiver_scale);
   // Receiver (i, j) sits at display position (i k + k/2) (its block center).
   vec2 coordinate = (vec2(pixel) + 0.5) / k - 0.5;
   ivec2 base = ivec2(floor(coordinate));
   vec2 fraction = coordinate - vec2(base);
-  bool bilateral = frame.counts.w == 0u;
-  float epsilon = frame.output_params.z;
+  bool bilateral = frame.composite_mode == kCompositeBilateral;
+  float epsilon = frame.bilateral_depth_epsilon;
   vec3 total = vec3(0.0);
   float weight_sum = 0.0, bilinear_sum = 0.0;
   float nearest_gap = 1e30;
@@ -97,13 +97,13 @@ vec3 upsampled_irradiance(uvec2 pixel, float depth) {
 
 void main() {
   uvec2 pixel = gl_GlobalInvocationID.xy;
-  uvec2 display_size = frame.sizes.xy;
+  uvec2 display_size = uvec2(frame.display_width, frame.display_height);
   if (any(greaterThanEqual(pixel, display_size))) return;
   uint index = pixel.y * display_size.x + pixel.x;
   vec4 position_depth = imageLoad(position_depth_image, ivec2(pixel));
   vec3 radiance;
   if (position_depth.w > 0.0) {
-    vec3 e = frame.counts.w == kCompositeDisplayIrradiance ? imageLoad(normal_image, ivec2(pixel)).rgb
+    vec3 e = frame.composite_mode == kCompositeDisplayIrradiance ? imageLoad(normal_image, ivec2(pixel)).rgb
                                                            : upsampled_irradiance(pixel, position_depth.w);
     irradiance[index] = vec4(e, 1.0);
     radiance = imageLoad(albedo_image, ivec2(pixel)).rgb / kPi * e;

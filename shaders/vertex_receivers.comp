@@ -8,9 +8,9 @@
 #include "shared/layouts.h"
 
 layout(local_size_x = 64) in;
-layout(std430, set = 0, binding = 0) readonly buffer Positions { vec4 positions[]; };
-layout(std430, set = 0, binding = 1) readonly buffer Normals { vec4 normals[]; };
-layout(std430, set = 0, binding = 2) writeonly buffer Receivers { Receiver receivers[]; };
+layout(std430, set = 0, binding = kVertexReceiversBindPositions) readonly buffer Positions { vec4 positions[]; };
+layout(std430, set = 0, binding = kVertexReceiversBindNormals) readonly buffer Normals { vec4 normals[]; };
+layout(std430, set = 0, binding = kVertexReceiversBindReceivers) writeonly buffer Receivers { Receiver receivers[]; };
 layout(push_constant) uniform Push { VertexReceiversPush push; };
 
 void main() {

@@ -5,6 +5,7 @@
 #define PROXYGI_SHADERS_SHARED_LAYOUTS_H
 
 #ifdef __cplusplus
+#include <cstddef>
 #include <cstdint>
 #include <glm/glm.hpp>
 namespace proxygi::gpu_layout {
@@ -62,20 +63,46 @@ struct ProxySphere {
   vec4 albedo;         // linear rgb, w unused
 };
 
-// Per-frame constants (uniform buffer, std140: only vec4/mat4/uvec4 members).
+// Per-frame constants (uniform buffer, std140). Scalars come in groups of four so every group
+// sits on a 16-byte boundary and the C++ struct has the same bytes as the GLSL block.
 struct FrameConstants {
-  mat4 view_projection;       // world → Vulkan clip space
+  mat4 view_projection;          // world → Vulkan clip space
   mat4 inverse_view_projection;  // clip → world (background rays)
-  vec4 eye_position;          // xyz eye (m)
-  vec4 eye_forward;           // xyz unit image-plane normal E: eye depth z = (p − e)·E
-  uvec4 sizes;                // display width, height, receiver width, height
-  uvec4 counts;               // proxy count, receiver scale k, SH order, upsample mode (0 bilateral, 1 bilinear,
-                              // kCompositeDisplayIrradiance: the vertex method's G-buffer holds E already)
-  vec4 shadow;                // η shadows, η indirect, HYB τ, log-table rows
-  vec4 tables;                // OL max norm, OL rows, visibility-table rows, LH cube face size
-  vec4 output_params;         // exposure multiplier, tonemap (0 aces, 1 reinhard, 2 clamp), bilateral ε (m), indirect on (1/0)
+  vec4 eye_position;             // xyz eye (m)
+  vec4 eye_forward;              // xyz unit image-plane normal E: eye depth z = (p − e)·E
+  uint display_width;            // pixels
+  uint display_height;
+  uint receiver_width;           // receivers (1/k of the display, or the vertex method's layout)
+  uint receiver_height;
+  uint proxy_count;              // spheres in the Proxies block
+  uint receiver_scale;           // k
+  uint sh_order;                 // n (the order-dependent shaders are compiled per order: checked)
+  uint composite_mode;           // kCompositeBilateral, kCompositeBilinear or kCompositeDisplayIrradiance
+  float shadow_eta;              // η of shadows (proxy radii)
+  float indirect_eta;            // η of indirect light
+  float hybrid_tau;              // HYB τ (float max: OL alone)
+  float log_table_rows;          // rows of the log-occlusion table
+  float optimal_linear_max_norm; // largest |f̂| the OL table covers
+  float optimal_linear_rows;
+  float visibility_table_rows;
+  float lighting_cube_face_size; // LH cube texels per face edge
+  float exposure;                // multiplier before the tonemap (2^EV)
+  uint tonemap;                  // kTonemapAces, kTonemapReinhard or kTonemapClamp
+  float bilateral_depth_epsilon; // ε of eq. 11 (m)
+  uint indirect_enabled;         // 0: no bounce light
   vec4 irradiance_sh[3u * kIndirectOrder * kIndirectOrder];  // L̃ = L * clamped cosine, order 3, r then g then b; x used
 };
+
+// FrameConstants::composite_mode: how upsample_composite forms display-resolution irradiance.
+PROXYGI_CONST(uint, kCompositeBilateral, 0u);
+PROXYGI_CONST(uint, kCompositeBilinear, 1u);
+// The vertex method: the G-buffer's second target already holds the interpolated irradiance
+// (gbuffer.frag with VERTEX_IRRADIANCE writes it there, not the normal).
+PROXYGI_CONST(uint, kCompositeDisplayIrradiance, 2u);
+// FrameConstants::tonemap.
+PROXYGI_CONST(uint, kTonemapAces, 0u);
+PROXYGI_CONST(uint, kTonemapReinhard, 1u);
+PROXYGI_CONST(uint, kTonemapClamp, 2u);
 
 // Push constants of composite.comp.
 struct CompositePush {
@@ -85,9 +112,6 @@ struct CompositePush {
   uint padding1;
 };
 
-// counts.w of the vertex method: upsample_composite reads display-resolution irradiance from the
-// G-buffer's second target (gbuffer.frag with VERTEX_IRRADIANCE writes it there, not the normal).
-PROXYGI_CONST(uint, kCompositeDisplayIrradiance, 2u);
 
 // Push constants of gbuffer.vert/frag: one draw per primitive.
 // Albedo = base_color.rgb × texture(binding 5) at uv' = (u·xyz, v·xyz) of (uv, 1): the rows of
@@ -117,10 +141,94 @@ struct Receiver {
   vec4 normal;          // xyz unit normal N, w unused
 };
 
+
+// ---- descriptor bindings (set 0) of each shader: the GLSL declarations and the C++ passes'
+// layouts and descriptor pushes both use these names, so a binding is numbered once ----
+// receivers.comp
+PROXYGI_CONST(uint, kReceiversBindFrame, 0u);
+PROXYGI_CONST(uint, kReceiversBindPositionDepth, 1u);
+PROXYGI_CONST(uint, kReceiversBindNormal, 2u);
+PROXYGI_CONST(uint, kReceiversBindReceivers, 3u);
+// shadow_gather.comp
+PROXYGI_CONST(uint, kShadowBindFrame, 0u);
+PROXYGI_CONST(uint, kShadowBindReceivers, 1u);
+PROXYGI_CONST(uint, kShadowBindProxies, 2u);
+PROXYGI_CONST(uint, kShadowBindLogTable, 3u);
+PROXYGI_CONST(uint, kShadowBindLogOcclusion, 4u);
+// exponentiate.comp
+PROXYGI_CONST(uint, kExponentiateBindFrame, 0u);
+PROXYGI_CONST(uint, kExponentiateBindReceivers, 1u);
+PROXYGI_CONST(uint, kExponentiateBindLogOcclusion, 2u);
+PROXYGI_CONST(uint, kExponentiateBindOptimalLinear, 3u);
+PROXYGI_CONST(uint, kExponentiateBindLightingCube, 4u);
+PROXYGI_CONST(uint, kExponentiateBindDirect, 5u);
+// indirect.comp (and indirect_exact.glsl)
+PROXYGI_CONST(uint, kIndirectBindFrame, 0u);
+PROXYGI_CONST(uint, kIndirectBindReceivers, 1u);
+PROXYGI_CONST(uint, kIndirectBindProxies, 2u);
+PROXYGI_CONST(uint, kIndirectBindVisibilityTable, 3u);
+PROXYGI_CONST(uint, kIndirectBindDirect, 4u);
+PROXYGI_CONST(uint, kIndirectBindIndirect, 5u);
+PROXYGI_CONST(uint, kIndirectBindShaded, 6u);
+PROXYGI_CONST(uint, kIndirectBindExactTable, 7u);
+// upsample_composite.comp
+PROXYGI_CONST(uint, kCompositeBindFrame, 0u);
+PROXYGI_CONST(uint, kCompositeBindPositionDepth, 1u);
+PROXYGI_CONST(uint, kCompositeBindNormal, 2u);
+PROXYGI_CONST(uint, kCompositeBindReceivers, 3u);
+PROXYGI_CONST(uint, kCompositeBindShaded, 4u);
+PROXYGI_CONST(uint, kCompositeBindIrradiance, 5u);
+PROXYGI_CONST(uint, kCompositeBindAlbedo, 6u);
+PROXYGI_CONST(uint, kCompositeBindEnvironment, 7u);
+PROXYGI_CONST(uint, kCompositeBindHdr, 8u);
+PROXYGI_CONST(uint, kCompositeBindLdr, 9u);
+// ambient_occlusion.comp
+PROXYGI_CONST(uint, kAoBindFrame, 0u);
+PROXYGI_CONST(uint, kAoBindReceivers, 1u);
+PROXYGI_CONST(uint, kAoBindProxies, 2u);
+PROXYGI_CONST(uint, kAoBindLightingCube, 3u);
+PROXYGI_CONST(uint, kAoBindDirect, 4u);
+PROXYGI_CONST(uint, kAoBindIndirect, 5u);
+PROXYGI_CONST(uint, kAoBindShaded, 6u);
+// gbuffer.vert / gbuffer.frag
+PROXYGI_CONST(uint, kGbufferBindFrame, 0u);
+PROXYGI_CONST(uint, kGbufferBindPositions, 1u);
+PROXYGI_CONST(uint, kGbufferBindNormals, 2u);
+PROXYGI_CONST(uint, kGbufferBindShaded, 3u);
+PROXYGI_CONST(uint, kGbufferBindUvs, 4u);
+PROXYGI_CONST(uint, kGbufferBindBaseColorTexture, 5u);
+// vertex_receivers.comp
+PROXYGI_CONST(uint, kVertexReceiversBindPositions, 0u);
+PROXYGI_CONST(uint, kVertexReceiversBindNormals, 1u);
+PROXYGI_CONST(uint, kVertexReceiversBindReceivers, 2u);
+// skin.comp
+PROXYGI_CONST(uint, kSkinBindBindPositions, 0u);
+PROXYGI_CONST(uint, kSkinBindBindNormals, 1u);
+PROXYGI_CONST(uint, kSkinBindJoints, 2u);
+PROXYGI_CONST(uint, kSkinBindWeights, 3u);
+PROXYGI_CONST(uint, kSkinBindSkinMatrices, 4u);
+PROXYGI_CONST(uint, kSkinBindNormalMatrices, 5u);
+PROXYGI_CONST(uint, kSkinBindOutPositions, 6u);
+PROXYGI_CONST(uint, kSkinBindOutNormals, 7u);
+PROXYGI_CONST(uint, kSkinBindPositionDeltas, 8u);
+PROXYGI_CONST(uint, kSkinBindNormalDeltas, 9u);
+PROXYGI_CONST(uint, kSkinBindMorphWeights, 10u);
+// the raster splat: receiver_depth.frag, shadow_splat.vert / .frag
+PROXYGI_CONST(uint, kSplatBindFrame, 0u);
+PROXYGI_CONST(uint, kSplatBindReceivers, 1u);
+PROXYGI_CONST(uint, kSplatBindProxies, 2u);
+PROXYGI_CONST(uint, kSplatBindBoundingMesh, 4u);
+PROXYGI_CONST(uint, kSplatBindLogTable, 3u);
+// splat_resolve.comp (targets at kResolveBindFirstTarget + i)
+PROXYGI_CONST(uint, kResolveBindFrame, 0u);
+PROXYGI_CONST(uint, kResolveBindLogOcclusion, 1u);
+PROXYGI_CONST(uint, kResolveBindFirstTarget, 2u);
+
 #ifdef __cplusplus
 static_assert(sizeof(TestPatternPush) == 16);
 static_assert(sizeof(ProxySphere) == 32);
 static_assert(sizeof(FrameConstants) == 128 + 16 * 7 + 16 * 27);
+static_assert(offsetof(FrameConstants, display_width) == 160 && offsetof(FrameConstants, irradiance_sh) == 240);
 static_assert(sizeof(GbufferPush) == 64);
 static_assert(sizeof(Receiver) == 32);
 static_assert(sizeof(CompositePush) == 16);

@@ -1,28 +1,24 @@
 #pragma once
-// The pipelines of the soft-GI frame, one per pass, each named after its shader (debug labels and
-// timing use the names). Inputs and outputs of each pass are the bindings listed in its shader:
-//   gbuffer      frame constants, positions, normals, uvs, base color texture
-//                                                        → position+depth, normal, albedo, depth
-//   receivers    position+depth, normal images           → receivers (1/k)
-//   shadow       receivers, proxies, log-occlusion table → log-occlusion SH per receiver
-//   exponentiate receivers, log SH, OL table, LH cubes   → direct E and (O_p)_0 per receiver
-//   indirect     receivers, proxies, visibility table, direct, exact-operator table → indirect E
-//                and ω_p per receiver,
-//                and the packed shaded buffer (E_direct + E_indirect, eye depth)
-//   upsample_composite  G-buffer, receiver normals, shaded, environment → display-resolution
-//                irradiance (AOV), HDR radiance and tonemapped sRGB (steps 7 and 8 fused)
-// The baselines (frame_settings.h ShadingMethod) reuse the passes under the same names:
-//   vertex       receivers = vertex_receivers.comp (mesh vertices → receivers), then shadow,
-//                exponentiate, indirect as above, then gbuffer with the vertex irradiance
-//                interpolated into its second target, then the composite
-//   ambient_occlusion  shadow = ambient_occlusion.comp (A and E per receiver); no exponentiate
-//                or indirect
-#include <array>
+// The passes of the soft-GI frame (DESIGN.md "One frame", steps 2–8), each its own object in a
+// file named like its shader, with a struct of named inputs and outputs, the accesses it makes
+// (from which PassBarriers derives the barriers between passes) and a record():
+//   gbuffer_pass.h             gbuffer.vert/.frag        draws → position+depth, normal, albedo, depth
+//   receivers_pass.h           receivers.comp            G-buffer → receivers (1/k)
+//   shadow_gather_pass.h       shadow_gather.comp        receivers, proxies, log table → log-occlusion
+//   shadow_splat_pass.h        shadow_splat.vert/.frag   the same by rasterizing spheres of influence
+//   exponentiate_pass.h        exponentiate.comp         log-occlusion, OL table, LH cubes → direct E, (O_p)_0
+//   indirect_pass.h            indirect.comp             proxies, visibility, direct → indirect E, ω_p, shaded
+//   upsample_composite_pass.h  upsample_composite.comp   G-buffer, shaded, environment → irradiance, HDR, sRGB
+//   vertex_receivers_pass.h    vertex_receivers.comp     (vertex baseline) mesh vertices → receivers
+//   ambient_occlusion_pass.h   ambient_occlusion.comp    (AO baseline) receivers, proxies → direct, shaded
+// SoftGiFrame records them in frame_pass_order(method); the baselines reuse the slots' names
+// (the vertex method's "receivers" is vertex_receivers, the AO method's "shadow" is
+// ambient_occlusion), so timings line up across methods.
 #include <span>
+#include <string>
 
-#include "gpu/frame_settings.h"
 #include "gpu/pipeline.h"
-#include "render/shading.h"
+#include "settings/render_settings.h"
 
 namespace proxygi::gpu {
 
@@ -31,33 +27,22 @@ class Context;
 enum class FramePass { skin, gbuffer, receivers, shadow, exponentiate, indirect, upsample_composite, count };
 const char* frame_pass_name(FramePass pass);
 // The passes a method records, in order (skinning, run by the caller, excluded).
-std::span<const FramePass> frame_pass_order(ShadingMethod method);
-
-struct FramePipelines {
-  // The G-buffer comes in an untextured and a textured pipeline. Only draws with a base color
-  // texture use the textured one: on lavapipe (Mesa 22.3) a layout holding a sampled image makes
-  // every per-draw descriptor push re-bind it, which cost the 20-mannequin crowd ~200 ms per
-  // G-buffer pass on a quiet machine (30 ms without the binding).
-  Pipeline gbuffer;
-  Pipeline gbuffer_textured;
-  Pipeline receivers;
-  Pipeline shadow;
-  Pipeline exponentiate;
-  Pipeline indirect;
-  Pipeline upsample_composite;
-  Pipeline vertex_receivers;   // vertex method only
-  Pipeline vertex_gbuffer;     // vertex method only
-  Pipeline vertex_gbuffer_textured;  // vertex method only
-  Pipeline ambient_occlusion;  // AO method only
-
-  // Builds the pipelines `method` uses for SH order 3..6 (the order-dependent shaders are
-  // embedded per order) with the indirect gather of one operator (embedded per operator).
-  static Result<FramePipelines> create(const Context& context, int order,
-                                       render::IndirectOperator indirect_operator = render::IndirectOperator::averaged,
-                                       ShadingMethod method = ShadingMethod::image_space);
-};
+std::span<const FramePass> frame_pass_order(settings::ShadingMethod method);
 
 inline constexpr VkFormat kGbufferFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+
+// A compute pipeline whose bindings are (binding number, type) pairs, all in the compute stage.
+struct ComputeBinding {
+  std::uint32_t binding = 0;
+  VkDescriptorType type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+};
+Result<Pipeline> make_compute_pipeline(const Context& context, const std::string& shader,
+                                       std::span<const ComputeBinding> bindings, std::uint32_t push_bytes = 0);
+// Dispatches kFrameLocalSize² workgroups over a width × height grid.
+void dispatch_grid(VkCommandBuffer commands, std::uint32_t width, std::uint32_t height);
+
+// Embedded shader names of the order- and operator-dependent variants.
+std::string order_variant(const std::string& shader, int order);  // "shadow_gather.comp:order4"
 
 }  // namespace proxygi::gpu

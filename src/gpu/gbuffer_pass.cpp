@@ -1,88 +1,130 @@
-// The G-buffer pass of SoftGiFrame (frame step 2): every draw rasterized at display resolution
-// into world position + eye depth, normal (or, for the vertex method, the interpolated vertex
-// irradiance) and albedo. Untextured draws go through the untextured pipeline, textured ones
-// after them through the textured pipeline (frame_passes.h says why the two are kept apart).
+#include "gpu/gbuffer_pass.h"
+
 #include <vector>
 
 #include "gpu/context.h"
-#include "gpu/soft_gi_frame.h"
+#include "gpu/frame_config.h"
 #include "gpu/transfer.h"
 #include "shaders/shared/layouts.h"
 
 namespace proxygi::gpu {
+
+using namespace gpu_layout;
+
 namespace {
 
-bool is_textured(const DrawItem& draw) {
-  return draw.texture.view != VK_NULL_HANDLE && draw.texture.sampler != VK_NULL_HANDLE;
+constexpr VkPipelineStageFlags2 kVertexStage = VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT;
+constexpr VkPipelineStageFlags2 kColorStage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
+
+VkRenderingAttachmentInfo cleared_attachment(const Image& image, VkImageLayout layout) {
+  VkRenderingAttachmentInfo info{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+  info.imageView = image.view();
+  info.imageLayout = layout;
+  info.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  info.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  return info;
 }
 
 }  // namespace
 
-void SoftGiFrame::record_gbuffer(VkCommandBuffer commands, const Slot& slot, std::span<const DrawItem> draws) const {
-  context_.begin_label(commands, frame_pass_name(FramePass::gbuffer));
-  for (const Image* image : {&position_depth_, &normal_, &albedo_})
-    transition(commands, *image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
-  transition(commands, depth_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
-  VkRenderingAttachmentInfo colors[3];
-  const Image* color_images[3] = {&position_depth_, &normal_, &albedo_};
-  for (int i = 0; i < 3; ++i) {
-    colors[i] = VkRenderingAttachmentInfo{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    colors[i].imageView = color_images[i]->view();
-    colors[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    colors[i].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    colors[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    colors[i].clearValue.color = {{0.0f, 0.0f, 0.0f, 0.0f}};
+Result<GbufferPass> GbufferPass::create(const Context& context, bool vertex_irradiance) {
+  GraphicsPipelineDescription description;
+  description.color_formats = {kGbufferFormat, kGbufferFormat, kGbufferFormat};
+  description.depth_format = kDepthFormat;
+  description.depth_test = description.depth_write = true;
+  description.vertex_shader = vertex_irradiance ? "gbuffer.vert:vertex_irradiance" : "gbuffer.vert";
+  GbufferPass pass;
+  pass.vertex_irradiance_ = vertex_irradiance;
+  for (const bool textured : {false, true}) {
+    std::vector<Binding> bindings = {
+        {kGbufferBindFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
+        {kGbufferBindPositions, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
+        {kGbufferBindNormals, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
+        {kGbufferBindUvs, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT}};
+    if (textured)
+      bindings.push_back(
+          {kGbufferBindBaseColorTexture, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT});
+    if (vertex_irradiance)
+      bindings.push_back({kGbufferBindShaded, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT});
+    description.fragment_shader = std::string("gbuffer.frag") +
+                                  (vertex_irradiance ? (textured ? ":vertex_irradiance_textured" : ":vertex_irradiance")
+                                                     : (textured ? ":textured" : ""));
+    auto made = Pipeline::graphics(context, description, bindings, sizeof(GbufferPush));
+    if (!made) return make_error(description.fragment_shader + ": " + made.message());
+    (textured ? pass.textured_ : pass.untextured_) = std::move(*made);
   }
-  VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-  depth.imageView = depth_.view();
-  depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-  depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  return pass;
+}
+
+std::vector<ResourceAccess> GbufferPass::accesses(const Inputs& in, const Outputs& out) const {
+  std::vector<ResourceAccess> list = {
+      reads(in.constants, kVertexStage | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT),
+      writes(out.position_depth, kColorStage), writes(out.normal, kColorStage), writes(out.albedo, kColorStage),
+      writes(out.depth, VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT)};
+  if (vertex_irradiance_) list.push_back(reads(in.shaded, kVertexStage));
+  for (const DrawItem& draw : in.draws) {
+    list.push_back(reads(draw.positions, kVertexStage));
+    list.push_back(reads(draw.normals, kVertexStage));
+    if (draw.uvs) list.push_back(reads(draw.uvs, kVertexStage));
+  }
+  return list;
+}
+
+void GbufferPass::record(const Context& context, VkCommandBuffer commands, const Inputs& in, const Outputs& out) const {
+  const Image* colors[] = {out.position_depth, out.normal, out.albedo};
+  for (const Image* image : colors)
+    transition(commands, *image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+  transition(commands, *out.depth, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
+  VkRenderingAttachmentInfo color_attachments[3];
+  for (int i = 0; i < 3; ++i) {
+    color_attachments[i] = cleared_attachment(*colors[i], VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+    color_attachments[i].clearValue.color = {{0.0f, 0.0f, 0.0f, 0.0f}};
+  }
+  VkRenderingAttachmentInfo depth = cleared_attachment(*out.depth, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
   depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
   depth.clearValue.depthStencil = {1.0f, 0};
   VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-  rendering.renderArea = {{0, 0}, {settings_.width, settings_.height}};
+  rendering.renderArea = {{0, 0}, {in.width, in.height}};
   rendering.layerCount = 1;
   rendering.colorAttachmentCount = 3;
-  rendering.pColorAttachments = colors;
+  rendering.pColorAttachments = color_attachments;
   rendering.pDepthAttachment = &depth;
   vkCmdBeginRendering(commands, &rendering);
-  const VkViewport viewport{0, 0, float(settings_.width), float(settings_.height), 0, 1};
-  const VkRect2D scissor{{0, 0}, {settings_.width, settings_.height}};
+  const VkViewport viewport{0, 0, float(in.width), float(in.height), 0, 1};
+  const VkRect2D scissor{{0, 0}, {in.width, in.height}};
   vkCmdSetViewport(commands, 0, 1, &viewport);
   vkCmdSetScissor(commands, 0, 1, &scissor);
 
   // Each draw's first receiver (vertex method) follows the draws' order, whatever order they
   // are recorded in.
-  const bool vertex = settings_.method == ShadingMethod::vertex;
-  std::vector<std::uint32_t> first_receiver(draws.size());
+  std::vector<std::uint32_t> first_receiver(in.draws.size());
   std::uint32_t receiver_offset = 0;
-  std::size_t shaded_draws = draws.size();
-  for (std::size_t i = 0; i < draws.size(); ++i) {
+  std::size_t shaded_draws = in.draws.size();
+  for (std::size_t i = 0; i < in.draws.size(); ++i) {
     first_receiver[i] = receiver_offset;
-    receiver_offset += round_up_to_receiver_group(draws[i].vertex_count());
-    if (vertex && receiver_offset > settings_.vertex_receivers) {  // beyond the capacity: not drawn
+    receiver_offset += round_up_to_receiver_group(in.draws[i].vertex_count());
+    if (vertex_irradiance_ && receiver_offset > in.receiver_capacity) {  // beyond the capacity: not drawn
       shaded_draws = i;
       break;
     }
   }
   for (const bool textured : {false, true}) {
-    const Pipeline& pipeline = vertex ? (textured ? pipelines_.vertex_gbuffer_textured : pipelines_.vertex_gbuffer)
-                                      : (textured ? pipelines_.gbuffer_textured : pipelines_.gbuffer);
+    const Pipeline& pipeline = textured ? textured_ : untextured_;
     bool bound = false;
     for (std::size_t i = 0; i < shaded_draws; ++i) {
-      const DrawItem& draw = draws[i];
-      if (is_textured(draw) != textured) continue;
+      const DrawItem& draw = in.draws[i];
+      if (draw.textured() != textured) continue;
       if (!bound) pipeline.bind(commands);
       bound = true;
       DescriptorPush descriptors;
-      descriptors.uniform_buffer(0, slot.constants)
-          .storage_buffer(1, *draw.positions)
-          .storage_buffer(2, *draw.normals)
-          .storage_buffer(4, draw.uvs ? *draw.uvs : *draw.positions);  // not read without uvs
-      if (textured) descriptors.sampled_image(5, draw.texture.view, draw.texture.sampler);
-      if (vertex) descriptors.storage_buffer(3, shaded_);
-      descriptors.push(context_, commands, pipeline);
-      gpu_layout::GbufferPush push{};
+      descriptors.uniform_buffer(kGbufferBindFrame, *in.constants)
+          .storage_buffer(kGbufferBindPositions, *draw.positions)
+          .storage_buffer(kGbufferBindNormals, *draw.normals)
+          .storage_buffer(kGbufferBindUvs, draw.uvs ? *draw.uvs : *draw.positions);  // not read without uvs
+      if (textured) descriptors.sampled_image(kGbufferBindBaseColorTexture, draw.texture.view, draw.texture.sampler);
+      if (vertex_irradiance_) descriptors.storage_buffer(kGbufferBindShaded, *in.shaded);
+      descriptors.push(context, commands, pipeline);
+      GbufferPush push{};
       push.base_color = draw.base_color;
       push.receiver_offset = first_receiver[i];
       const glm::mat3& m = draw.texture.uv_transform;  // column-major: m[column][row]
@@ -95,9 +137,8 @@ void SoftGiFrame::record_gbuffer(VkCommandBuffer commands, const Slot& slot, std
     }
   }
   vkCmdEndRendering(commands);
-  for (const Image* image : {&position_depth_, &normal_, &albedo_})
+  for (const Image* image : colors)
     transition(commands, *image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL);
-  context_.end_label(commands);
 }
 
 }  // namespace proxygi::gpu

@@ -1,18 +1,22 @@
 #pragma once
-// SceneRenderer: a whole scene file rendered frame by frame on the GPU (DESIGN.md "One frame").
-// Set-up (once): load every character (sharing models between instances), obtain each model's
-// proxy rig (the cached *.proxies.json when its model hash matches, else fit and cache it),
-// project the environment to SH, build the frame tables and the SoftGiFrame, upload bind-pose
-// meshes and the ground. Per frame: CPU sampling, local-to-model, skin palettes and proxy
-// tracking into the frame's ring slot; GPU skinning and the soft-GI passes.
+// SceneRenderer: a scene rendered on the GPU at any time, with any camera, into any output
+// (DESIGN.md "One frame"). The CPU side is a world::World (models shared by file, rigs, clips,
+// static meshes, environment SH), loaded once and evaluated per frame into a world state; the
+// renderer uploads bind-pose meshes once, and per frame writes skin palettes and proxies into a
+// ring slot and records the skin pass and the soft-GI passes.
 //
-// Frames in flight: begin_frame(f) prepares and submits frame f into ring slot f mod N without
-// waiting for frame f−1; finish_frame(f) waits for it and returns its pixels. So a recorder can
-// keep N frames on the GPU while it encodes finished ones.
+// Frames in flight: begin(request) prepares and submits a frame into ring slot n mod N without
+// waiting for the previous one; finish(ticket) waits for it and returns its pixels (or, for an
+// image output, only its statistics). So a recorder keeps N frames on the GPU while it encodes
+// finished ones, and a viewer renders into swapchain images.
+//
+// Settings change in place: apply_settings() rebuilds only what settings::classify_change says
+// (pipelines, targets, tables) and the result equals a renderer created with those settings.
 #include <array>
 #include <chrono>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "base/result.h"
@@ -20,8 +24,9 @@
 #include "gpu/material_textures.h"
 #include "gpu/skin_pass.h"
 #include "gpu/soft_gi_frame.h"
-#include "proxies/tracking.h"
+#include "scene/camera.h"
 #include "scene/scene.h"
+#include "world/world.h"
 
 namespace proxygi::gpu {
 
@@ -32,7 +37,7 @@ struct SceneRendererOptions {
 
 struct FrameStatistics {
   std::size_t proxies = 0;           // proxies streamed this frame
-  double cpu_prepare_ms = 0.0;       // sampling, skin palettes, tracking, uploads
+  double cpu_prepare_ms = 0.0;       // world evaluation, skin palettes, tracking, uploads
 };
 
 // Milliseconds of each pass of one frame, each submitted and fenced on its own and timed with
@@ -44,58 +49,109 @@ struct PassTimings {
   std::size_t proxies = 0;
 };
 
+// What to render: a scene time and optionally a camera, or a world state evaluated by the caller.
+struct FrameRequest {
+  double time_s = 0.0;                       // scene time, seconds
+  std::optional<scene::CameraState> camera;  // another camera than the scene's
+  const world::WorldState* state = nullptr;  // when set, rendered as it is (time_s and camera unused)
+  int frame = -1;                            // the scene frame this is (bookkeeping), -1: none
+  FrameOutput output = FrameOutput::readback();
+};
+
+struct FrameTicket {
+  std::uint64_t id = 0;
+};
+
 struct FinishedFrame {
-  int frame = 0;
+  int frame = -1;
+  double time_s = 0.0;
   std::vector<render::Sphere> spheres;  // the proxies this frame streamed, world space
-  std::vector<std::uint8_t> ldr;     // RGBA8 sRGB, width × height
-  image::ImageF hdr;                 // linear radiance
+  std::vector<std::uint8_t> ldr;        // RGBA8 sRGB, width × height (readback outputs)
+  image::ImageF hdr;                    // linear radiance (readback outputs with hdr)
   FrameStatistics statistics;
 };
 
 class SceneRenderer {
  public:
+  // Loads the scene's world (options.assets_dir, rigs fitted or cached) and renders it with the
+  // scene's render settings at its output size.
   static Result<std::unique_ptr<SceneRenderer>> create(Context& context, const scene::Scene& scene,
                                                        const SceneRendererOptions& options);
+  // Renders a world loaded by the caller (shared with other renderers, the path tracer, the
+  // regression tracks) with these settings; the world must outlive the renderer.
+  static Result<std::unique_ptr<SceneRenderer>> create(Context& context, std::shared_ptr<const world::World> world,
+                                                       const settings::RenderSettings& settings, std::uint32_t width,
+                                                       std::uint32_t height, std::uint32_t frames_in_flight = 2);
   ~SceneRenderer();
 
-  // Prepares frame `frame` (scene time frame / fps) and submits it without waiting for the GPU.
-  // Ring slots are used round-robin whatever the frame numbers (shards, resumed gaps); the next
-  // slot must be free: finish the oldest begun frame first when all are in flight.
+  // Changes settings and output size in place (waits for frames in flight first).
+  Status apply_settings(const settings::RenderSettings& settings, std::uint32_t width, std::uint32_t height);
+
+  // Prepares a frame and submits it without waiting for the GPU. Ring slots are used round-robin;
+  // the next slot must be free: finish the oldest begun frame first when all are in flight.
+  Result<FrameTicket> begin(const FrameRequest& request);
+  // Waits for a begun frame and returns it.
+  Result<FinishedFrame> finish(FrameTicket ticket);
+  Result<FinishedFrame> render(const FrameRequest& request);
+
+  // Scene frames (time frame / fps, the scene camera, readback with HDR).
   Status begin_frame(int frame);
-  // Waits for frame `frame` (begun earlier) and returns its pixels.
-  Result<FinishedFrame> finish_frame(int frame);
-  // begin + finish.
+  Result<FinishedFrame> finish_frame(int frame);  // the oldest begun frame with that number
   Result<FinishedFrame> render(int frame);
   // Prepares frame `frame` and runs its passes one submit each, timing every pass. Needs every
   // begun frame finished. The frame's pixels are not copied out.
   Result<PassTimings> time_passes(int frame);
 
-  const scene::Scene& scene() const { return scene_; }
+  // The skinned world-space positions of the last finished frame, per instance and primitive in
+  // the order of the instance's mesh nodes (what the G-buffer drew; for tests against the CPU
+  // skinning of the same world state). Needs every begun frame finished.
+  Result<std::vector<std::vector<std::vector<glm::vec3>>>> read_skinned_positions() const;
+
+  const scene::Scene& scene() const { return world_->scene(); }
+  const world::World& world() const { return *world_; }
   const SoftGiFrame& frame() const { return *frame_; }
-  std::size_t proxy_count() const;
+  const FrameConfig& config() const { return frame_->config(); }
+  std::size_t proxy_count() const { return world_->proxy_count(); }
+  std::size_t frames_in_flight() const;
 
  private:
-  struct Model;
+  struct ModelTextures;
   struct Instance;
   explicit SceneRenderer(Context& context);
-  // CPU half of a frame into ring slot `slot`: poses, skin palettes, tracking, constants.
-  Result<std::vector<DrawItem>> prepare_frame(int frame, std::uint32_t slot);
-  void record_skinning(VkCommandBuffer commands, std::uint32_t slot) const;  // out of line: Model and Instance are incomplete here
+  Status upload_instances();
+  Status upload_static_meshes();  // ground (a quad, or the vertex method's grid) and static meshes
+  Result<FrameConfig> make_config(const settings::RenderSettings& settings, std::uint32_t width,
+                                  std::uint32_t height) const;
+  Result<render::FrameTables> make_tables(const settings::RenderSettings& settings) const;
+  // CPU half of a frame into ring slot `slot`: world state, skin palettes, constants, proxies.
+  Result<std::vector<DrawItem>> prepare(const FrameRequest& request, std::uint32_t slot);
+  void record_skinning(VkCommandBuffer commands, std::uint32_t slot) const;
+  Status wait_all();
 
   Context& context_;
-  scene::Scene scene_;
-  std::vector<std::unique_ptr<Model>> models_;
+  std::shared_ptr<const world::World> world_;
+  std::vector<std::unique_ptr<ModelTextures>> model_textures_;  // one per world model
   std::vector<std::unique_ptr<Instance>> instances_;
   std::vector<StaticMesh> static_meshes_;
   std::vector<std::unique_ptr<MaterialTextures>> static_textures_;  // the textures static_meshes_ bind
+  settings::ShadingMethod static_meshes_method_ = settings::ShadingMethod::image_space;
   std::unique_ptr<SoftGiFrame> frame_;
   std::unique_ptr<SkinPass> skin_pass_;
-  std::vector<Context::InFlight> in_flight_;
-  std::vector<int> slot_frame_;              // frame held by each slot, −1 when free
-  std::vector<std::vector<render::Sphere>> slot_spheres_;  // proxies of the frame in each slot
+  world::WorldState state_;  // scratch: the state evaluated for the frame being prepared
+
+  struct SlotState {
+    Context::InFlight in_flight;
+    bool busy = false;
+    std::uint64_t ticket = 0;
+    int frame = -1;
+    double time_s = 0.0;
+    FrameOutput output;
+    std::vector<render::Sphere> spheres;
+    FrameStatistics statistics;
+  };
+  std::vector<SlotState> slots_;
   std::uint32_t next_slot_ = 0;
-  std::vector<FrameStatistics> slot_statistics_;
-  std::vector<render::Sphere> spheres_;      // scratch: this frame's proxies
+  std::uint64_t next_ticket_ = 1;
 };
 
 }  // namespace proxygi::gpu

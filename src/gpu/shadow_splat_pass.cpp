@@ -8,6 +8,8 @@
 
 #include "gpu/context.h"
 #include "gpu/frame_passes.h"
+#include "gpu/pass_barriers.h"
+#include "settings/render_settings.h"
 #include "gpu/transfer.h"
 #include "shaders/shared/layouts.h"
 #include "shaders/shared/splat_layouts.h"
@@ -75,7 +77,8 @@ Result<std::unique_ptr<ShadowSplatPass>> ShadowSplatPass::create(Context& contex
                                                                  std::uint32_t display_width,
                                                                  std::uint32_t display_height,
                                                                  std::uint32_t receiver_scale) {
-  if (order < 3 || order > 6) return make_error("shadow splat: SH order " + std::to_string(order) + " is not in 3..6");
+  if (order < settings::kMinShOrder || order > settings::kMaxShOrder)
+    return make_error("shadow splat: SH order " + std::to_string(order) + " is out of range");
   std::unique_ptr<ShadowSplatPass> pass(new ShadowSplatPass(context));
   pass->order_ = order;
   pass->passes_ = std::uint32_t(PROXYGI_SPLAT_PASSES(order));
@@ -102,8 +105,8 @@ Result<std::unique_ptr<ShadowSplatPass>> ShadowSplatPass::create(Context& contex
   depth.depth_format = kDepthFormat;
   depth.depth_test = depth.depth_write = true;
   depth.depth_compare = VK_COMPARE_OP_ALWAYS;
-  const Binding depth_bindings[] = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kFragment},
-                                    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kFragment}};
+  const Binding depth_bindings[] = {{gpu_layout::kSplatBindFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kFragment},
+                                    {gpu_layout::kSplatBindReceivers, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kFragment}};
   auto depth_pipeline = Pipeline::graphics(context, depth, depth_bindings, 0);
   if (!depth_pipeline) return make_error("receiver_depth.frag: " + depth_pipeline.message());
   pass->depth_pipeline_ = std::move(*depth_pipeline);
@@ -117,20 +120,22 @@ Result<std::unique_ptr<ShadowSplatPass>> ShadowSplatPass::create(Context& contex
   splat.depth_compare = VK_COMPARE_OP_GREATER;
   splat.blend = BlendMode::additive;
   splat.cull = VK_CULL_MODE_FRONT_BIT;  // keep the back faces (y-down projection: outside CCW is front)
-  const Binding splat_bindings[] = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kVertex | kFragment},
-                                    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kFragment},
-                                    {2, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kVertex},
-                                    {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kFragment},
-                                    {4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex}};
+  const Binding splat_bindings[] = {{gpu_layout::kSplatBindFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kVertex | kFragment},
+                                    {gpu_layout::kSplatBindReceivers, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kFragment},
+                                    {gpu_layout::kSplatBindProxies, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kVertex},
+                                    {gpu_layout::kSplatBindLogTable, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kFragment},
+                                    {gpu_layout::kSplatBindBoundingMesh, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex}};
   auto splat_pipeline = Pipeline::graphics(context, splat, splat_bindings, sizeof(gpu_layout::SplatPush));
   if (!splat_pipeline) return make_error("shadow_splat.frag: " + splat_pipeline.message());
   pass->splat_pipeline_ = std::move(*splat_pipeline);
 
   const std::uint32_t read_targets = std::uint32_t(PROXYGI_SPLAT_TARGETS(order));
-  std::vector<Binding> resolve_bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-                                           {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT}};
+  std::vector<Binding> resolve_bindings = {
+      {gpu_layout::kResolveBindFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+      {gpu_layout::kResolveBindLogOcclusion, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT}};
   for (std::uint32_t i = 0; i < read_targets; ++i)
-    resolve_bindings.push_back({2 + i, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT});
+    resolve_bindings.push_back(
+        {gpu_layout::kResolveBindFirstTarget + i, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT});
   auto resolve_pipeline = Pipeline::compute(context, "splat_resolve.comp" + suffix, resolve_bindings, 0);
   if (!resolve_pipeline) return make_error("splat_resolve.comp: " + resolve_pipeline.message());
   pass->resolve_pipeline_ = std::move(*resolve_pipeline);
@@ -162,6 +167,14 @@ void ShadowSplatPass::set_viewport(VkCommandBuffer commands) const {
   vkCmdSetScissor(commands, 0, 1, &scissor);
 }
 
+std::vector<ResourceAccess> ShadowSplatPass::accesses(const ShadowSplatInputs& inputs) const {
+  constexpr VkPipelineStageFlags2 kGraphics = VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+  return {reads(inputs.constants, kGraphics | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT),
+          reads(inputs.receivers, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT),
+          reads(inputs.proxies, VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT),
+          reads(inputs.log_table, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT), writes(inputs.log_occlusion)};
+}
+
 void ShadowSplatPass::record(VkCommandBuffer commands, const ShadowSplatInputs& inputs) const {
   record_depth(commands, inputs);
   record_splat(commands, inputs);
@@ -181,8 +194,8 @@ void ShadowSplatPass::record_depth(VkCommandBuffer commands, const ShadowSplatIn
   set_viewport(commands);
   depth_pipeline_.bind(commands);
   DescriptorPush()
-      .uniform_buffer(0, *inputs.constants)
-      .storage_buffer(1, *inputs.receivers)
+      .uniform_buffer(gpu_layout::kSplatBindFrame, *inputs.constants)
+      .storage_buffer(gpu_layout::kSplatBindReceivers, *inputs.receivers)
       .push(context_, commands, depth_pipeline_);
   vkCmdDraw(commands, 3, 1, 0, 0);
   vkCmdEndRendering(commands);
@@ -211,11 +224,11 @@ void ShadowSplatPass::record_splat(VkCommandBuffer commands, const ShadowSplatIn
     set_viewport(commands);
     splat_pipeline_.bind(commands);
     DescriptorPush()
-        .uniform_buffer(0, *inputs.constants)
-        .storage_buffer(1, *inputs.receivers)
-        .uniform_buffer(2, *inputs.proxies)
-        .storage_buffer(3, *inputs.log_table)
-        .storage_buffer(4, bounding_mesh_)
+        .uniform_buffer(gpu_layout::kSplatBindFrame, *inputs.constants)
+        .storage_buffer(gpu_layout::kSplatBindReceivers, *inputs.receivers)
+        .uniform_buffer(gpu_layout::kSplatBindProxies, *inputs.proxies)
+        .storage_buffer(gpu_layout::kSplatBindLogTable, *inputs.log_table)
+        .storage_buffer(gpu_layout::kSplatBindBoundingMesh, bounding_mesh_)
         .push(context_, commands, splat_pipeline_);
     const gpu_layout::SplatPush push{4 * pass * targets_per_pass_, 0, 0, 0};
     splat_pipeline_.push_constants(commands, &push, sizeof(push));
@@ -229,9 +242,11 @@ void ShadowSplatPass::record_splat(VkCommandBuffer commands, const ShadowSplatIn
 void ShadowSplatPass::record_resolve(VkCommandBuffer commands, const ShadowSplatInputs& inputs) const {
   resolve_pipeline_.bind(commands);
   DescriptorPush push;
-  push.uniform_buffer(0, *inputs.constants).storage_buffer(1, *inputs.log_occlusion);
+  push.uniform_buffer(gpu_layout::kResolveBindFrame, *inputs.constants)
+      .storage_buffer(gpu_layout::kResolveBindLogOcclusion, *inputs.log_occlusion);
   const std::uint32_t read_targets = std::uint32_t(PROXYGI_SPLAT_TARGETS(order_));
-  for (std::uint32_t i = 0; i < read_targets; ++i) push.storage_image(2 + i, targets_[i].view());
+  for (std::uint32_t i = 0; i < read_targets; ++i)
+    push.storage_image(gpu_layout::kResolveBindFirstTarget + i, targets_[i].view());
   push.push(context_, commands, resolve_pipeline_);
   vkCmdDispatch(commands, group_count(receiver_width_, gpu_layout::kFrameLocalSize),
                 group_count(receiver_height_, gpu_layout::kFrameLocalSize), 1);

@@ -24,6 +24,7 @@
 #include <vulkan/vulkan.h>
 
 #include "base/result.h"
+#include "gpu/pass_barriers.h"
 #include "gpu/pipeline.h"
 #include "gpu/resources.h"
 
@@ -47,7 +48,9 @@ class ShadowSplatPass {
   static Result<std::unique_ptr<ShadowSplatPass>> create(Context& context, int order, std::uint32_t display_width,
                                                          std::uint32_t display_height, std::uint32_t receiver_scale);
 
-  // depth + splat + resolve, each followed by a full barrier.
+  // What record() reads and writes (PassBarriers orders it against the other passes).
+  std::vector<ResourceAccess> accesses(const ShadowSplatInputs& inputs) const;
+  // depth + splat + resolve; the steps are ordered by full barriers among themselves.
   void record(VkCommandBuffer commands, const ShadowSplatInputs& inputs) const;
   void record_depth(VkCommandBuffer commands, const ShadowSplatInputs& inputs) const;
   void record_splat(VkCommandBuffer commands, const ShadowSplatInputs& inputs) const;

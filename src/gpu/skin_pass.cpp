@@ -53,8 +53,12 @@ Status upload_morph_targets(Context& context, const anim::Primitive& primitive, 
 }  // namespace
 
 Result<SkinPass> SkinPass::create(const Context& context) {
+  using namespace gpu_layout;
   std::vector<Binding> bindings;
-  for (std::uint32_t binding = 0; binding < 11; ++binding)
+  for (std::uint32_t binding : {kSkinBindBindPositions, kSkinBindBindNormals, kSkinBindJoints, kSkinBindWeights,
+                                kSkinBindSkinMatrices, kSkinBindNormalMatrices, kSkinBindOutPositions,
+                                kSkinBindOutNormals, kSkinBindPositionDeltas, kSkinBindNormalDeltas,
+                                kSkinBindMorphWeights})
     bindings.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT});
   auto pipeline = Pipeline::compute(context, "skin.comp", bindings, sizeof(gpu_layout::SkinPush));
   if (!pipeline) return pipeline.error();
@@ -113,17 +117,17 @@ void SkinPass::record(const Context& context, VkCommandBuffer commands, const Sk
   context.begin_label(commands, kName);
   pipeline_.bind(commands);
   DescriptorPush()
-      .storage_buffer(0, primitive.bind_positions)
-      .storage_buffer(1, primitive.bind_normals)
-      .storage_buffer(2, primitive.joints)
-      .storage_buffer(3, primitive.weights)
-      .storage_buffer(4, skin_matrices)
-      .storage_buffer(5, normal_matrices ? *normal_matrices : skin_matrices)
-      .storage_buffer(6, primitive.world_positions)
-      .storage_buffer(7, primitive.world_normals)
-      .storage_buffer(8, position_deltas)
-      .storage_buffer(9, normal_deltas)
-      .storage_buffer(10, morphing ? *morph_weights : primitive.weights)
+      .storage_buffer(gpu_layout::kSkinBindBindPositions, primitive.bind_positions)
+      .storage_buffer(gpu_layout::kSkinBindBindNormals, primitive.bind_normals)
+      .storage_buffer(gpu_layout::kSkinBindJoints, primitive.joints)
+      .storage_buffer(gpu_layout::kSkinBindWeights, primitive.weights)
+      .storage_buffer(gpu_layout::kSkinBindSkinMatrices, skin_matrices)
+      .storage_buffer(gpu_layout::kSkinBindNormalMatrices, normal_matrices ? *normal_matrices : skin_matrices)
+      .storage_buffer(gpu_layout::kSkinBindOutPositions, primitive.world_positions)
+      .storage_buffer(gpu_layout::kSkinBindOutNormals, primitive.world_normals)
+      .storage_buffer(gpu_layout::kSkinBindPositionDeltas, position_deltas)
+      .storage_buffer(gpu_layout::kSkinBindNormalDeltas, normal_deltas)
+      .storage_buffer(gpu_layout::kSkinBindMorphWeights, morphing ? *morph_weights : primitive.weights)
       .push(context, commands, pipeline_);
   const gpu_layout::SkinPush push{primitive.vertex_count,        primitive.influences,
                                   primitive.has_normals ? 1u : 0u, normal_matrices ? 1u : 0u,

@@ -1,8 +1,8 @@
-#include "apps/record_plan.h"
+#include "run/frame_plan.h"
 
 #include <charconv>
 
-namespace proxygi::app {
+namespace proxygi::run {
 namespace {
 
 // A whole non-negative decimal integer (no sign, no spaces, no trailing characters).
@@ -58,4 +58,4 @@ Result<std::vector<int>> plan_frames(const scene::Output& output, const std::opt
   return frames;
 }
 
-}  // namespace proxygi::app
+}  // namespace proxygi::run

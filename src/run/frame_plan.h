@@ -14,7 +14,7 @@
 #include "base/result.h"
 #include "scene/scene.h"
 
-namespace proxygi::app {
+namespace proxygi::run {
 
 struct FrameRange {
   int first = 0;  // inclusive
@@ -41,4 +41,4 @@ FrameRange scene_frame_range(const scene::Output& output);
 Result<std::vector<int>> plan_frames(const scene::Output& output, const std::optional<FrameRange>& requested,
                                      const Shard& shard);
 
-}  // namespace proxygi::app
+}  // namespace proxygi::run

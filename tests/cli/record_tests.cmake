@@ -1,8 +1,8 @@
 # proxygi record: planner unit tests, argument errors (exit 2), and GPU runs checking
 # determinism, resume and shard merging (record_gpu_check.cmake).
 proxygi_test(record_plan_tests
-  SOURCES ${PROJECT_SOURCE_DIR}/tests/record/record_plan_test.cpp ${PROJECT_SOURCE_DIR}/apps/record_plan.cpp
-  DEPS proxygi::base proxygi::scene
+  SOURCES ${PROJECT_SOURCE_DIR}/tests/record/record_plan_test.cpp
+  DEPS proxygi::base proxygi::scene proxygi::run
   LABELS unit)
 
 set(_record_expect ${CMAKE_CURRENT_SOURCE_DIR}/expect_exit.cmake)

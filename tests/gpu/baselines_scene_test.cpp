@@ -13,7 +13,7 @@ namespace {
 
 using BaselineSceneTest = testing::GpuTest;
 
-Result<FinishedFrame> render_default(Context& context, scene::ShadingMethod method,
+Result<FinishedFrame> render_default(Context& context, settings::ShadingMethod method,
                                      std::unique_ptr<SceneRenderer>& out) {
   scene::Scene scene = scene::default_scene();
   scene.output.width = scene.output.height = 256;
@@ -35,14 +35,14 @@ double rmse(const image::ImageF& a, const image::ImageF& b) {
 
 TEST_F(BaselineSceneTest, DefaultSceneRendersWithEveryMethod) {
   std::unique_ptr<SceneRenderer> image_renderer, vertex_renderer, ao_renderer;
-  auto image = render_default(context(), scene::ShadingMethod::image_space, image_renderer);
-  auto vertex = render_default(context(), scene::ShadingMethod::vertex, vertex_renderer);
-  auto ao = render_default(context(), scene::ShadingMethod::ambient_occlusion, ao_renderer);
+  auto image = render_default(context(), settings::ShadingMethod::image_space, image_renderer);
+  auto vertex = render_default(context(), settings::ShadingMethod::vertex, vertex_renderer);
+  auto ao = render_default(context(), settings::ShadingMethod::ambient_occlusion, ao_renderer);
   ASSERT_TRUE(image.ok()) << image.message();
   ASSERT_TRUE(vertex.ok()) << vertex.message();
   ASSERT_TRUE(ao.ok()) << ao.message();
-  EXPECT_EQ(vertex_renderer->frame().settings().method, ShadingMethod::vertex);
-  EXPECT_EQ(ao_renderer->frame().settings().method, ShadingMethod::ambient_occlusion);
+  EXPECT_EQ(vertex_renderer->frame().settings().method, settings::ShadingMethod::vertex);
+  EXPECT_EQ(ao_renderer->frame().settings().method, settings::ShadingMethod::ambient_occlusion);
 
   // Vertex receivers: the ground grid plus the mannequin's skinned vertices, each above ground.
   const scene::Scene& scene = vertex_renderer->scene();
@@ -59,7 +59,7 @@ TEST_F(BaselineSceneTest, DefaultSceneRendersWithEveryMethod) {
   }
   EXPECT_EQ(on_ground, ground.positions.size()) << "every ground vertex is a receiver";
   EXPECT_GT(valid - on_ground, 1000u) << "the mannequin's vertices are receivers";
-  EXPECT_LE(valid, vertex_renderer->frame().settings().vertex_receivers);
+  EXPECT_LE(valid, vertex_renderer->config().vertex_receivers);
 
   for (const auto* frame : {&*image, &*vertex, &*ao})
     for (const auto& pixel : frame->hdr.pixels)

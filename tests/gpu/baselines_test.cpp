@@ -1,4 +1,4 @@
-// The prior-work baselines on the GPU (gpu::ShadingMethod vertex and ambient_occlusion) against
+// The prior-work baselines on the GPU (settings::ShadingMethod vertex and ambient_occlusion) against
 // their CPU twins (src/render/baselines.h, shading.h) at sample receivers, relative error ≤ 1e-3;
 // AO against the closed form of one sphere and never brighter than unshadowed; the vertex method
 // converging to the image-space method as the ground grid gets denser.
@@ -18,14 +18,14 @@ using BaselineTest = testing::GpuTest;
 constexpr float kPi = 3.14159265358979f;
 
 // The fixture scene (white sky, camera looking down at the origin) drawn from `ground`.
-testing::RenderedFrame render_frame(Context& context, ShadingMethod method, std::uint32_t size, std::uint32_t scale,
+testing::RenderedFrame render_frame(Context& context, settings::ShadingMethod method, std::uint32_t size, std::uint32_t scale,
                                     const render::GroundGrid& ground, const std::vector<render::Sphere>& spheres,
                                     int order = 4) {
-  FrameSettings settings;
-  settings.method = method;
-  settings.width = settings.height = size;
-  settings.receiver_scale = scale;
-  return testing::render_fixture_frame(context, settings, testing::constant_sky_sh(order, 1.0), order, ground, spheres);
+  FrameConfig config;
+  config.render.method = method;
+  config.width = config.height = size;
+  config.render.receiver_scale = scale;
+  return testing::render_fixture_frame(context, config, testing::constant_sky_sh(order, 1.0), order, ground, spheres);
 }
 
 render::GroundGrid grid(float half_fine, float per_metre) {
@@ -66,8 +66,8 @@ TEST(GroundGrid, CoversTheSquareWithBlockOrderedVertices) {
 
 TEST_F(BaselineTest, AmbientOcclusionMatchesCpuTwinAndNeverBrightens) {
   const auto ground = grid(2.0f, 1.0f);
-  auto rendered = render_frame(context(), ShadingMethod::ambient_occlusion, 64, 2, ground, kTwoSpheres);
-  auto unshadowed = render_frame(context(), ShadingMethod::ambient_occlusion, 64, 2, ground, {});
+  auto rendered = render_frame(context(), settings::ShadingMethod::ambient_occlusion, 64, 2, ground, kTwoSpheres);
+  auto unshadowed = render_frame(context(), settings::ShadingMethod::ambient_occlusion, 64, 2, ground, {});
   ASSERT_TRUE(rendered.frame && unshadowed.frame);
   auto positions = rendered.frame->read_receiver_positions();
   auto normals = rendered.frame->read_receiver_normals();
@@ -108,7 +108,7 @@ TEST_F(BaselineTest, AmbientOcclusionOfOneSphereIsTheClosedForm) {
   // Under a white sky (E(N) = π) one sphere above the receiver's horizon removes exactly
   // π s² cos β: AO is exact for a single blocker (SHEXP at order 4 is not: frame_test).
   const render::Sphere sphere{{0.0f, 1.2f, 0.0f}, 0.4f, {0.5f, 0.5f, 0.5f}};
-  auto rendered = render_frame(context(), ShadingMethod::ambient_occlusion, 64, 1, grid(2.0f, 1.0f), {sphere});
+  auto rendered = render_frame(context(), settings::ShadingMethod::ambient_occlusion, 64, 1, grid(2.0f, 1.0f), {sphere});
   ASSERT_TRUE(rendered.frame);
   auto positions = rendered.frame->read_receiver_positions();
   auto direct = rendered.frame->read_direct();
@@ -133,10 +133,10 @@ TEST_F(BaselineTest, AmbientOcclusionOfOneSphereIsTheClosedForm) {
 // Per-vertex values of the ground grid's vertices (receiver i = vertex i of the one draw).
 TEST_F(BaselineTest, VertexReceiversShadingAndInterpolationMatchCpuTwins) {
   const auto ground = grid(2.0f, 6.0f);
-  auto rendered = render_frame(context(), ShadingMethod::vertex, 64, 4, ground, kTwoSpheres);
+  auto rendered = render_frame(context(), settings::ShadingMethod::vertex, 64, 4, ground, kTwoSpheres);
   ASSERT_TRUE(rendered.frame);
   const SoftGiFrame& frame = *rendered.frame;
-  EXPECT_EQ(frame.settings().receiver_width() * frame.settings().receiver_height(),
+  EXPECT_EQ(frame.config().receiver_width() * frame.config().receiver_height(),
             round_up_to_receiver_group(std::uint32_t(ground.positions.size())));
   auto positions = frame.read_receiver_positions();
   auto normals = frame.read_receiver_normals();
@@ -163,7 +163,7 @@ TEST_F(BaselineTest, VertexReceiversShadingAndInterpolationMatchCpuTwins) {
   }
   // Shading per vertex: the image-space twins at the vertex.
   int shadowed = 0, lit_by_bounce = 0;
-  const std::size_t count = std::size_t(rendered.tables.settings.order * rendered.tables.settings.order);
+  const std::size_t count = std::size_t(rendered.tables.settings.sh_order * rendered.tables.settings.sh_order);
   for (std::size_t i = 0; i < ground.positions.size(); i += 7) {
     const glm::vec3 p = ground.positions[i], n = ground.normals[i];
     const auto cpu_log = render::accumulate_log_occlusion(rendered.tables, p, n, kTwoSpheres);
@@ -227,8 +227,8 @@ TEST_F(BaselineTest, VertexReceiversShadingAndInterpolationMatchCpuTwins) {
 // unshadowed irradiance under the white sky.
 float vertex_against_image(Context& context, const render::GroundGrid& vertex_ground, float half) {
   const auto flat = grid(2.0f, 1.0f);
-  auto image = render_frame(context, ShadingMethod::image_space, 96, 1, flat, kTwoSpheres);
-  auto vertex = render_frame(context, ShadingMethod::vertex, 96, 1, vertex_ground, kTwoSpheres);
+  auto image = render_frame(context, settings::ShadingMethod::image_space, 96, 1, flat, kTwoSpheres);
+  auto vertex = render_frame(context, settings::ShadingMethod::vertex, 96, 1, vertex_ground, kTwoSpheres);
   EXPECT_TRUE(image.frame && vertex.frame);
   if (!image.frame || !vertex.frame) return 1e9f;
   auto gbuffer = image.frame->read_gbuffer_positions();
@@ -266,7 +266,7 @@ TEST_F(BaselineTest, OutputsAreFiniteAndNonNegative) {
   const std::vector<render::Sphere> spheres = {{{0.0f, 0.2f, 0.0f}, 0.5f, {1.0f, 1.0f, 1.0f}},  // straddles the plane
                                                {{0.1f, 0.3f, 0.1f}, 0.4f, {1.0f, 0.0f, 0.0f}},  // heavy overlap
                                                {{-0.5f, 0.05f, 0.3f}, 0.2f, {0.0f, 1.0f, 0.0f}}};
-  for (ShadingMethod method : {ShadingMethod::vertex, ShadingMethod::ambient_occlusion}) {
+  for (settings::ShadingMethod method : {settings::ShadingMethod::vertex, settings::ShadingMethod::ambient_occlusion}) {
     auto rendered = render_frame(context(), method, 48, 4, grid(2.0f, 8.0f), spheres, 6);
     ASSERT_TRUE(rendered.frame);
     auto hdr = rendered.frame->read_hdr();

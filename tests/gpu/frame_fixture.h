@@ -59,32 +59,31 @@ inline GroundMesh ground_plane(float size, int cells) {
 
 // One frame of the fixture scene, rendered and finished: `ground` (any mesh with positions,
 // normals, indices; albedo 0.8) under `lighting` at SH order `order`, the camera at `eye` looking
-// at the origin, `settings` as given (one frame in flight; the vertex method gets receivers for
+// at the origin, `config` as given (one frame in flight; the vertex method gets receivers for
 // every ground vertex). Failures are reported through gtest; `frame` is null after one.
 struct RenderedFrame {
   std::unique_ptr<SoftGiFrame> frame;
   render::FrameTables tables;
 };
 template <class Ground>
-RenderedFrame render_fixture_frame(Context& context, FrameSettings settings, const sh::RgbSh& lighting, int order,
+RenderedFrame render_fixture_frame(Context& context, FrameConfig config, const sh::RgbSh& lighting, int order,
                                    const Ground& ground, const std::vector<render::Sphere>& spheres,
                                    const glm::vec3& eye = {0.0f, 4.0f, 3.0f}) {
   RenderedFrame out;
-  render::FrameTableSettings table_settings;
-  table_settings.order = order;
-  out.tables = render::make_frame_tables(lighting, table_settings);
+  config.render.sh_order = order;
+  out.tables = render::make_frame_tables(lighting, config.render);
   auto mesh = upload_static_mesh(context, ground.positions, ground.normals, ground.indices, glm::vec4(0.8f, 0.8f, 0.8f, 1));
   EXPECT_TRUE(mesh.ok());
   if (!mesh.ok()) return out;
   const DrawItem draws[] = {mesh->draw()};
-  settings.frames_in_flight = 1;
-  if (settings.method == ShadingMethod::vertex) settings.vertex_receivers = vertex_receiver_count(draws);
-  auto frame = SoftGiFrame::create(context, settings, out.tables, image::ImageF(8, 4, glm::vec4(1.0f)));
+  config.frames_in_flight = 1;
+  if (config.render.method == settings::ShadingMethod::vertex) config.vertex_receivers = vertex_receiver_count(draws);
+  auto frame = SoftGiFrame::create(context, config, out.tables, image::ImageF(8, 4, glm::vec4(1.0f)));
   EXPECT_TRUE(frame.ok()) << (frame.ok() ? "" : frame.message());
   if (!frame.ok()) return out;
   out.frame = std::move(*frame);
   EXPECT_TRUE(out.frame->write_slot(0, look_at(eye, {0.0f, 0.0f, 0.0f}, 60.0f, 1.0f), spheres).ok());
-  EXPECT_TRUE(context.submit_and_wait([&](VkCommandBuffer commands) { out.frame->record(commands, 0, draws); }).ok());
+  EXPECT_TRUE(context.submit_and_wait([&](VkCommandBuffer commands) { out.frame->record(commands, 0, draws, FrameOutput::readback()); }).ok());
   return out;
 }
 

@@ -19,11 +19,11 @@ constexpr float kPi = 3.14159265358979f;
 RenderedFrame render_sphere_over_plane(Context& context, int order, std::uint32_t size, std::uint32_t scale,
                                        const std::vector<render::Sphere>& spheres,
                                        const glm::vec3& eye = {0.0f, 4.0f, 3.0f}, bool optimal_linear_only = false) {
-  FrameSettings settings;
-  settings.width = settings.height = size;
-  settings.receiver_scale = scale;
-  settings.optimal_linear_only = optimal_linear_only;
-  return testing::render_fixture_frame(context, settings, testing::constant_sky_sh(order, 1.0), order,
+  FrameConfig config;
+  config.width = config.height = size;
+  config.render.receiver_scale = scale;
+  if (optimal_linear_only) config.render.exponential = settings::Exponential::ol;
+  return testing::render_fixture_frame(context, config, testing::constant_sky_sh(order, 1.0), order,
                                        testing::ground_plane(20.0f, 4), spheres, eye);
 }
 
@@ -199,7 +199,7 @@ TEST_F(FrameDisplayTest, ReceiversUpsampleAndCompositeMatchCpuTwins) {
     }
   EXPECT_GT(covered, receivers * receivers / 2);
 
-  // Upsampling and composite at every other display pixel.
+  // settings::Upsampling and composite at every other display pixel.
   int checked = 0, background = 0;
   for (int y = 0; y < kSize; y += 2)
     for (int x = 0; x < kSize; x += 2) {
@@ -224,12 +224,12 @@ TEST_F(FrameDisplayTest, ReceiversUpsampleAndCompositeMatchCpuTwins) {
                                                  (offset.y == 1 ? fraction.y : 1.0f - fraction.y);
       }
       const glm::vec3 expected = render::upsample(taps, p.w, glm::vec3(gbuffer_normals->at(x, y)),
-                                                  render::UpsampleMode::bilateral, FrameSettings{}.bilateral_depth_epsilon);
+                                                  settings::Upsampling::bilateral, settings::RenderSettings{}.bilateral_depth_epsilon);
       EXPECT_LE(relative_error(glm::vec3(irradiance->at(x, y)), expected), 1e-3f) << "upsample at " << x << "," << y;
 
       const glm::vec3 radiance = glm::vec3(gbuffer_albedo->at(x, y)) / kPi * glm::vec3(irradiance->at(x, y));
       EXPECT_LE(relative_error(glm::vec3(hdr->at(x, y)), radiance), 1e-3f) << "composite at " << x << "," << y;
-      const glm::vec3 display = render::tonemap(glm::vec3(hdr->at(x, y)), 1.0f, render::Tonemap::aces);
+      const glm::vec3 display = render::tonemap(glm::vec3(hdr->at(x, y)), 1.0f, settings::Tonemap::aces);
       for (int c = 0; c < 3; ++c) {
         const int expected_code = int(image::linear_to_srgb(display[c]) * 255.0f + 0.5f);
         EXPECT_NEAR(int((*ldr)[index * 4 + std::size_t(c)]), expected_code, 1) << "sRGB at " << x << "," << y;

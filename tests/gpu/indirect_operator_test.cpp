@@ -31,12 +31,12 @@ sh::RgbSh directional_sky() {
 }
 
 
-testing::RenderedFrame render(Context& context, render::IndirectOperator op, const std::vector<render::Sphere>& spheres) {
-  FrameSettings settings;
-  settings.width = settings.height = 64;
-  settings.receiver_scale = 2;
-  settings.indirect_operator = op;
-  return testing::render_fixture_frame(context, settings, directional_sky(), 4, testing::ground_plane(20.0f, 4), spheres);
+testing::RenderedFrame render(Context& context, settings::IndirectOperator op, const std::vector<render::Sphere>& spheres) {
+  FrameConfig config;
+  config.width = config.height = 64;
+  config.render.receiver_scale = 2;
+  config.render.indirect_operator = op;
+  return testing::render_fixture_frame(context, config, directional_sky(), 4, testing::ground_plane(20.0f, 4), spheres);
 }
 
 float relative_error(const glm::vec3& gpu, const glm::vec3& cpu) {
@@ -47,11 +47,11 @@ TEST_F(IndirectOperatorTest, EachOperatorMatchesItsCpuTwinAtSampleReceivers) {
   const std::vector<render::Sphere> spheres = {{{0.0f, 0.8f, 0.0f}, 0.5f, {0.9f, 0.1f, 0.1f}},
                                                {{0.7f, 0.3f, 0.4f}, 0.3f, {0.1f, 0.2f, 0.9f}},
                                                {{-0.6f, 0.1f, -0.3f}, 0.35f, {0.2f, 0.8f, 0.2f}}};  // straddles the plane
-  const render::IndirectOperator operators[] = {render::IndirectOperator::point, render::IndirectOperator::averaged,
-                                                render::IndirectOperator::exact};
+  const settings::IndirectOperator operators[] = {settings::IndirectOperator::point, settings::IndirectOperator::averaged,
+                                                settings::IndirectOperator::exact};
   std::vector<image::ImageF> results;
-  for (render::IndirectOperator op : operators) {
-    SCOPED_TRACE(render::indirect_operator_name(op));
+  for (settings::IndirectOperator op : operators) {
+    SCOPED_TRACE(settings::name_of(op));
     auto rendered = render(context(), op, spheres);
     ASSERT_TRUE(rendered.frame);
     auto positions = rendered.frame->read_receiver_positions();
@@ -86,10 +86,10 @@ TEST_F(IndirectOperatorTest, EachOperatorMatchesItsCpuTwinAtSampleReceivers) {
         total += glm::length(second);
       }
       std::printf("indirect %s vs %s: mean |difference| %.1f %% of the mean, largest %.1f %%\n",
-                  render::indirect_operator_name(operators[a]), render::indirect_operator_name(operators[b]),
+                  settings::name_of(operators[a]).data(), settings::name_of(operators[b]).data(),
                   100.0f * difference / std::max(total, 1e-6f), 100.0f * largest);
-      EXPECT_GT(largest, 1e-2f) << render::indirect_operator_name(operators[a]) << " vs "
-                                << render::indirect_operator_name(operators[b]);
+      EXPECT_GT(largest, 1e-2f) << settings::name_of(operators[a]) << " vs "
+                                << settings::name_of(operators[b]);
     }
 }
 

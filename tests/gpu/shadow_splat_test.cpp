@@ -16,13 +16,13 @@ namespace {
 using ShadowSplatTest = testing::GpuTest;
 
 
-testing::RenderedFrame render_plane(Context& context, SplatMethod splat, int order, std::uint32_t size,
+testing::RenderedFrame render_plane(Context& context, settings::SplatMethod splat, int order, std::uint32_t size,
                                     std::uint32_t scale, const std::vector<render::Sphere>& spheres, const glm::vec3& eye) {
-  FrameSettings settings;
-  settings.width = settings.height = size;
-  settings.receiver_scale = scale;
-  settings.splat = splat;
-  return testing::render_fixture_frame(context, settings, testing::constant_sky_sh(order, 1.0), order,
+  FrameConfig config;
+  config.width = config.height = size;
+  config.render.receiver_scale = scale;
+  config.render.splat = splat;
+  return testing::render_fixture_frame(context, config, testing::constant_sky_sh(order, 1.0), order,
                                        testing::ground_plane(20.0f, 4), spheres, eye);
 }
 
@@ -50,7 +50,7 @@ TEST(ShadowSplatMesh, BoundingMeshContainsTheUnitSphereAndFacesOutward) {
 TEST_F(ShadowSplatTest, RasterSplatMatchesCpuTwinAtSampleReceivers) {
   for (int order : {4, 6}) {  // order 6: 9 targets, two draws of 5
     for (std::uint32_t scale : {1u, 2u}) {
-      auto rendered = render_plane(context(), SplatMethod::raster, order, 64, scale, kSpheres, kEye);
+      auto rendered = render_plane(context(), settings::SplatMethod::raster, order, 64, scale, kSpheres, kEye);
       ASSERT_TRUE(rendered.frame);
       auto positions = rendered.frame->read_receiver_positions();
       auto normals = rendered.frame->read_receiver_normals();
@@ -84,8 +84,8 @@ TEST_F(ShadowSplatTest, RasterSplatMatchesCpuTwinAtSampleReceivers) {
 TEST_F(ShadowSplatTest, RasterSplatMatchesComputeGatherOnWholeFrames) {
   for (int order : {3, 5}) {
     for (std::uint32_t scale : {1u, 4u}) {
-      auto raster = render_plane(context(), SplatMethod::raster, order, 96, scale, kSpheres, kEye);
-      auto gather = render_plane(context(), SplatMethod::compute, order, 96, scale, kSpheres, kEye);
+      auto raster = render_plane(context(), settings::SplatMethod::raster, order, 96, scale, kSpheres, kEye);
+      auto gather = render_plane(context(), settings::SplatMethod::compute, order, 96, scale, kSpheres, kEye);
       ASSERT_TRUE(raster.frame && gather.frame);
       auto raster_log = raster.frame->read_log_occlusion();
       auto gather_log = gather.frame->read_log_occlusion();
@@ -122,15 +122,15 @@ TEST_F(ShadowSplatTest, SceneRenderSplatRasterMatchesComputeOnTheDefaultScene) {
   scene::Scene scene = scene::default_scene();
   scene.output.width = scene.output.height = 128;
   std::vector<std::uint8_t> pictures[2];
-  for (scene::SplatMethod splat : {scene::SplatMethod::compute, scene::SplatMethod::raster}) {
+  for (settings::SplatMethod splat : {settings::SplatMethod::compute, settings::SplatMethod::raster}) {
     scene.render.splat = splat;
     auto renderer = SceneRenderer::create(context(), scene, {PROXYGI_SOURCE_DIR "/assets", false});
     ASSERT_TRUE(renderer.ok()) << renderer.message();
     ASSERT_EQ((*renderer)->frame().settings().splat,
-              splat == scene::SplatMethod::raster ? SplatMethod::raster : SplatMethod::compute);
+              splat == settings::SplatMethod::raster ? settings::SplatMethod::raster : settings::SplatMethod::compute);
     auto rendered = (*renderer)->render(40);
     ASSERT_TRUE(rendered.ok()) << rendered.message();
-    pictures[splat == scene::SplatMethod::raster ? 1 : 0] = rendered->ldr;
+    pictures[splat == settings::SplatMethod::raster ? 1 : 0] = rendered->ldr;
   }
   ASSERT_EQ(pictures[0].size(), pictures[1].size());
   int largest = 0;

@@ -40,14 +40,15 @@ std::vector<glm::vec3> linear_texels(const anim::Image& image) {
 // wrap modes show; returns the G-buffer albedo.
 image::ImageF render_quad(Context& context, const anim::Image& image, const anim::TextureSampler& description,
                           const glm::mat3& uv_transform, const glm::vec4& factor) {
-  render::FrameTableSettings table_settings;
-  table_settings.order = 3;
+  settings::RenderSettings table_settings;
+  table_settings.sh_order = 3;
   const auto tables = render::make_frame_tables(testing::constant_sky_sh(3, 1.0), table_settings);
-  FrameSettings settings;
-  settings.width = settings.height = kSize;
-  settings.receiver_scale = 1;
-  settings.frames_in_flight = 1;
-  auto frame = SoftGiFrame::create(context, settings, tables, image::ImageF(8, 4, glm::vec4(1.0f)));
+  FrameConfig config;
+  config.render.sh_order = 3;
+  config.width = config.height = kSize;
+  config.render.receiver_scale = 1;
+  config.frames_in_flight = 1;
+  auto frame = SoftGiFrame::create(context, config, tables, image::ImageF(8, 4, glm::vec4(1.0f)));
   EXPECT_TRUE(frame.ok()) << (frame.ok() ? "" : frame.message());
   if (!frame.ok()) return {};
   auto texture = upload_srgb_texture(context, image);
@@ -67,7 +68,7 @@ image::ImageF render_quad(Context& context, const anim::Image& image, const anim
   view.forward = {0.0f, 0.0f, 1.0f};
   EXPECT_TRUE((*frame)->write_slot(0, view, {}).ok());
   const DrawItem draws[] = {mesh->draw()};
-  EXPECT_TRUE(context.submit_and_wait([&](VkCommandBuffer commands) { (*frame)->record(commands, 0, draws); }).ok());
+  EXPECT_TRUE(context.submit_and_wait([&](VkCommandBuffer commands) { (*frame)->record(commands, 0, draws, FrameOutput::readback()); }).ok());
   auto albedo = (*frame)->read_gbuffer_albedo();
   EXPECT_TRUE(albedo.ok());
   return albedo.ok() ? std::move(*albedo) : image::ImageF{};

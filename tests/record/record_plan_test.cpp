@@ -4,9 +4,9 @@
 
 #include <algorithm>
 
-#include "apps/record_plan.h"
+#include "run/frame_plan.h"
 
-namespace proxygi::app {
+namespace proxygi::run {
 namespace {
 
 scene::Output output_range(int first, int count) {

@@ -1,0 +1,55 @@
+#pragma once
+// What the G-buffer and the vertex receivers draw: world-space meshes on the GPU (skinned
+// characters from the skin pass, static meshes uploaded once).
+#include <cstdint>
+#include <span>
+
+#include <glm/glm.hpp>
+
+#include "base/result.h"
+#include "gpu/material_textures.h"
+#include "gpu/resources.h"
+
+namespace proxygi::gpu {
+
+class Context;
+
+// One mesh draw of the G-buffer pass: world-space vec4 positions and normals, 32-bit indices;
+// albedo = base_color × texture (gpu/material_textures.h) at the vertices' uvs.
+struct DrawItem {
+  const Buffer* positions = nullptr;
+  const Buffer* normals = nullptr;
+  const Buffer* indices = nullptr;
+  std::uint32_t index_count = 0;
+  glm::vec4 base_color{1.0f};   // linear albedo factor
+  const Buffer* uvs = nullptr;  // vec2 TEXCOORD_0 per vertex; null: uv (0, 0)
+  BaseColorTexture texture;     // null view: white
+  std::uint32_t vertex_count() const { return positions ? std::uint32_t(positions->size() / sizeof(glm::vec4)) : 0; }
+  bool textured() const { return texture.view != VK_NULL_HANDLE && texture.sampler != VK_NULL_HANDLE; }
+};
+
+// The vertex method's receiver capacity for these draws: each draw's vertices start a new group
+// (FrameConfig::vertex_receivers must be at least this).
+std::uint32_t vertex_receiver_count(std::span<const DrawItem> draws);
+
+// A static world-space mesh uploaded once (ground, static meshes).
+struct StaticMesh {
+  Buffer positions;  // vec4
+  Buffer normals;    // vec4
+  Buffer indices;    // uint32
+  Buffer uvs;        // vec2; no handle when the mesh has none
+  std::uint32_t index_count = 0;
+  glm::vec4 base_color{1.0f};
+  BaseColorTexture texture;
+  DrawItem draw() const {
+    return {&positions, &normals, &indices, index_count, base_color, uvs.handle() != VK_NULL_HANDLE ? &uvs : nullptr,
+            texture};
+  }
+};
+// uvs: empty or one per position. The texture's image and sampler must outlive the mesh's draws.
+Result<StaticMesh> upload_static_mesh(Context& context, std::span<const glm::vec3> positions,
+                                      std::span<const glm::vec3> normals, std::span<const std::uint32_t> indices,
+                                      const glm::vec4& base_color, std::span<const glm::vec2> uvs = {},
+                                      const BaseColorTexture& texture = {});
+
+}  // namespace proxygi::gpu

@@ -1,0 +1,40 @@
+#pragma once
+// The pass objects one frame configuration records (frame_passes.h): only those its method uses,
+// built for its SH order, indirect operator and splat, and (the raster splat) its sizes.
+#include <memory>
+#include <optional>
+
+#include "base/result.h"
+#include "gpu/ambient_occlusion_pass.h"
+#include "gpu/exponentiate_pass.h"
+#include "gpu/frame_config.h"
+#include "gpu/gbuffer_pass.h"
+#include "gpu/indirect_pass.h"
+#include "gpu/receivers_pass.h"
+#include "gpu/shadow_gather_pass.h"
+#include "gpu/shadow_splat_pass.h"
+#include "gpu/upsample_composite_pass.h"
+#include "gpu/vertex_receivers_pass.h"
+
+namespace proxygi::gpu {
+
+struct FramePassSet {
+  std::optional<GbufferPass> gbuffer;
+  std::optional<ReceiversPass> receivers;                // image-space and AO receivers
+  std::optional<VertexReceiversPass> vertex_receivers;   // vertex method
+  std::optional<ShadowGatherPass> shadow_gather;         // compute gather (and the vertex method)
+  std::unique_ptr<ShadowSplatPass> shadow_splat;         // SplatMethod::raster, image space only
+  std::optional<AmbientOcclusionPass> ambient_occlusion; // AO method
+  std::optional<ExponentiatePass> exponentiate;
+  std::optional<IndirectPass> indirect;
+  std::optional<UpsampleCompositePass> upsample_composite;
+
+  static Result<FramePassSet> create(Context& context, const FrameConfig& config);
+  // The raster splat is sized by the receivers: rebuilt when only the targets change.
+  Status rebuild_sized(Context& context, const FrameConfig& config);
+};
+
+// Whether `config` splats by rasterizing (the raster splat needs image-space receivers).
+bool uses_raster_splat(const FrameConfig& config);
+
+}  // namespace proxygi::gpu

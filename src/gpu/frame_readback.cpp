@@ -1,0 +1,66 @@
+// SoftGiFrame's readbacks of the last frame's targets (tests, AOVs): synchronous, after the
+// frame's submission completed.
+#include <cstring>
+
+#include "gpu/soft_gi_frame.h"
+#include "gpu/transfer.h"
+#include "shaders/shared/layouts.h"
+
+namespace proxygi::gpu {
+
+Result<image::ImageF> SoftGiFrame::read_vec4_buffer(const Buffer& buffer, std::uint32_t width,
+                                                    std::uint32_t height) const {
+  auto bytes = readback(context_, buffer);
+  if (!bytes) return bytes.error();
+  image::ImageF out{int(width), int(height)};
+  std::memcpy(out.pixels.data(), bytes->data(), std::min(bytes->size(), out.pixels.size() * sizeof(glm::vec4)));
+  return out;
+}
+
+Result<std::vector<std::uint8_t>> SoftGiFrame::read_ldr() const { return readback(context_, targets_.ldr); }
+Result<image::ImageF> SoftGiFrame::read_hdr() const { return read_vec4_buffer(targets_.hdr, config_.width, config_.height); }
+Result<image::ImageF> SoftGiFrame::read_irradiance() const {
+  return read_vec4_buffer(targets_.irradiance, config_.width, config_.height);
+}
+Result<image::ImageF> SoftGiFrame::read_direct() const {
+  return read_vec4_buffer(targets_.direct, config_.receiver_width(), config_.receiver_height());
+}
+Result<image::ImageF> SoftGiFrame::read_indirect() const {
+  return read_vec4_buffer(targets_.indirect, config_.receiver_width(), config_.receiver_height());
+}
+Result<image::ImageF> SoftGiFrame::read_shaded() const {
+  return read_vec4_buffer(targets_.shaded, config_.receiver_width(), config_.receiver_height());
+}
+
+Result<image::ImageF> SoftGiFrame::read_receiver_field(bool normals) const {
+  auto bytes = readback(context_, targets_.receivers);
+  if (!bytes) return bytes.error();
+  image::ImageF out{int(config_.receiver_width()), int(config_.receiver_height())};
+  const auto* receivers = reinterpret_cast<const gpu_layout::Receiver*>(bytes->data());
+  for (std::size_t i = 0; i < out.pixels.size(); ++i)
+    out.pixels[i] = normals ? receivers[i].normal : receivers[i].position_depth;
+  return out;
+}
+Result<image::ImageF> SoftGiFrame::read_receiver_positions() const { return read_receiver_field(false); }
+Result<image::ImageF> SoftGiFrame::read_receiver_normals() const { return read_receiver_field(true); }
+
+Result<image::ImageF> SoftGiFrame::read_gbuffer_image(const Image& image) const {
+  auto bytes = readback(context_, image, VK_IMAGE_LAYOUT_GENERAL);  // record() leaves them GENERAL
+  if (!bytes) return bytes.error();
+  image::ImageF out{int(config_.width), int(config_.height)};
+  std::memcpy(out.pixels.data(), bytes->data(), std::min(bytes->size(), out.pixels.size() * sizeof(glm::vec4)));
+  return out;
+}
+Result<image::ImageF> SoftGiFrame::read_gbuffer_positions() const { return read_gbuffer_image(targets_.position_depth); }
+Result<image::ImageF> SoftGiFrame::read_gbuffer_normals() const { return read_gbuffer_image(targets_.normal); }
+Result<image::ImageF> SoftGiFrame::read_gbuffer_albedo() const { return read_gbuffer_image(targets_.albedo); }
+
+Result<std::vector<float>> SoftGiFrame::read_log_occlusion() const {
+  auto bytes = readback(context_, targets_.log_occlusion);
+  if (!bytes) return bytes.error();
+  std::vector<float> values(bytes->size() / sizeof(float));
+  std::memcpy(values.data(), bytes->data(), values.size() * sizeof(float));
+  return values;
+}
+
+}  // namespace proxygi::gpu

@@ -1,0 +1,154 @@
+// SceneRenderer's GPU meshes: every instance's primitives uploaded once in bind pose for the skin
+// pass (with a palette per ring slot), the ground and the static meshes in world space.
+#include <cstring>
+
+#include "anim/posed_character.h"
+#include "anim/skinning.h"
+#include "base/log.h"
+#include "gpu/scene_renderer_parts.h"
+#include "gpu/transfer.h"
+#include "render/ground_grid.h"
+
+namespace proxygi::gpu {
+
+Status SceneRenderer::upload_instances() {
+  const std::uint32_t slots = std::uint32_t(slots_.size());
+  model_textures_.clear();
+  for (const auto& model : world_->models()) {
+    auto textures = MaterialTextures::create(context_, model->character);
+    if (!textures) return make_error(model->file.string() + ": " + textures.message());
+    model_textures_.push_back(std::make_unique<ModelTextures>(ModelTextures{model.get(), std::move(*textures)}));
+  }
+  instances_.clear();
+  for (std::size_t index = 0; index < world_->instances().size(); ++index) {
+    const world::CharacterInstance& source = world_->instances()[index];
+    const MaterialTextures* textures = nullptr;
+    for (const auto& model : model_textures_)
+      if (model->model == source.model) textures = &model->textures;
+    auto instance = std::make_unique<Instance>();
+    const anim::Character& character = source.model->character;
+    for (std::size_t node = 0; node < character.nodes.size(); ++node) {
+      const anim::Node& n = character.nodes[node];
+      if (n.mesh < 0) continue;
+      MeshDraw draw;
+      draw.node = int(node);
+      draw.skin = n.skin;
+      const std::size_t palette_size = n.skin >= 0 ? character.skins[std::size_t(n.skin)].joints.size() : 1;
+      for (const anim::Primitive& original : character.meshes[std::size_t(n.mesh)].primitives) {
+        anim::Primitive primitive = original;
+        if (n.skin < 0 || primitive.influences_per_vertex < 1) {  // rigid: one joint, the node itself
+          primitive.influences_per_vertex = 1;
+          primitive.joints.assign(primitive.positions.size(), 0);
+          primitive.weights.assign(primitive.positions.size(), 1.0f);
+        }
+        auto uploaded = SkinPass::upload(context_, primitive);
+        if (!uploaded) return uploaded.error();
+        auto indices = create_buffer_with_data(context_, as_bytes(std::span<const std::uint32_t>(primitive.indices)),
+                                               VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+        if (!indices) return indices.error();
+        draw.primitives.push_back(std::move(*uploaded));
+        draw.indices.push_back(std::move(*indices));
+        draw.index_counts.push_back(std::uint32_t(primitive.indices.size()));
+        draw.uvs.emplace_back();
+        if (!primitive.uvs.empty()) {
+          auto uvs = create_buffer_with_data(context_, as_bytes(std::span<const glm::vec2>(primitive.uvs)),
+                                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+          if (!uvs) return uvs.error();
+          draw.uvs.back() = std::move(*uvs);
+        }
+        draw.materials.push_back(textures->binding(primitive.material));
+      }
+      for (std::uint32_t slot = 0; slot < slots; ++slot)
+        for (auto* palettes : {&draw.palettes, &draw.normal_palettes}) {
+          auto palette = Buffer::create(context_, palette_size * sizeof(glm::mat4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                        MemoryKind::host_visible);
+          if (!palette) return palette.error();
+          palettes->push_back(std::move(*palette));
+        }
+      draw.morph_offset = std::size_t(anim::morph_weight_offset(character, int(node)));
+      if (const int targets = anim::morph_target_count(character, int(node)); targets > 0)
+        for (std::uint32_t slot = 0; slot < slots; ++slot) {
+          auto weights = Buffer::create(context_, std::size_t(targets) * sizeof(float),
+                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryKind::host_visible);
+          if (!weights) return weights.error();
+          draw.morph_weights.push_back(std::move(*weights));
+        }
+      instance->meshes.push_back(std::move(draw));
+    }
+    instances_.push_back(std::move(instance));
+  }
+  return {};
+}
+
+Status SceneRenderer::upload_static_meshes() {
+  const scene::Scene& scene = world_->scene();
+  const settings::ShadingMethod method = frame_ ? frame_->settings().method : static_meshes_method_;
+  static_meshes_.clear();
+  static_textures_.clear();
+  static_meshes_method_ = method;
+  if (scene.ground.enabled && method == settings::ShadingMethod::vertex) {
+    // Vertex receivers need ground vertices where the characters are (render/ground_grid.h).
+    const render::GroundRegion region = render::ground_fine_region(scene);
+    const render::GroundGrid grid =
+        render::make_ground_grid(scene.ground.size, region.min, region.max, region.vertices_per_metre);
+    log_info("vertex method: ground grid of " + std::to_string(grid.positions.size()) + " vertices (" +
+             std::to_string(region.vertices_per_metre) + " per metre near the characters)");
+    auto ground = upload_static_mesh(context_, grid.positions, grid.normals, grid.indices,
+                                     glm::vec4(scene.ground.albedo, 1.0f));
+    if (!ground) return ground.error();
+    static_meshes_.push_back(std::move(*ground));
+  } else if (scene.ground.enabled) {
+    const float half = 0.5f * scene.ground.size;
+    const glm::vec3 corners[] = {{-half, 0, -half}, {half, 0, -half}, {half, 0, half}, {-half, 0, half}};
+    const glm::vec3 up[] = {{0, 1, 0}, {0, 1, 0}, {0, 1, 0}, {0, 1, 0}};
+    const std::uint32_t quad[] = {0, 2, 1, 0, 3, 2};
+    auto ground = upload_static_mesh(context_, corners, up, quad, glm::vec4(scene.ground.albedo, 1.0f));
+    if (!ground) return ground.error();
+    static_meshes_.push_back(std::move(*ground));
+  }
+  for (const world::StaticModel& model : world_->static_models()) {
+    auto textures = MaterialTextures::create(context_, model.character);
+    if (!textures)
+      return make_error("static_meshes[" + std::to_string(model.scene_static_mesh) + "]: " + textures.message());
+    static_textures_.push_back(std::make_unique<MaterialTextures>(std::move(*textures)));
+    for (const auto& primitive : model.primitives) {
+      if (primitive.normals.size() != primitive.positions.size()) continue;
+      // The albedo override replaces the whole base color, texture included (as in the reference).
+      const MaterialBinding material = model.albedo ? MaterialBinding{glm::vec4(*model.albedo, 1.0f), {}}
+                                                    : static_textures_.back()->binding(primitive.material);
+      auto mesh = upload_static_mesh(context_, primitive.positions, primitive.normals, primitive.indices,
+                                     material.base_color, primitive.uvs, material.texture);
+      if (!mesh) return mesh.error();
+      static_meshes_.push_back(std::move(*mesh));
+    }
+  }
+  return {};
+}
+
+Result<std::vector<std::vector<std::vector<glm::vec3>>>> SceneRenderer::read_skinned_positions() const {
+  std::vector<std::vector<std::vector<glm::vec3>>> out;
+  for (const auto& instance : instances_) {
+    out.emplace_back();
+    for (const auto& mesh : instance->meshes)
+      for (const auto& primitive : mesh.primitives) {
+        auto bytes = readback(context_, primitive.world_positions);
+        if (!bytes) return bytes.error();
+        std::vector<glm::vec3> positions(primitive.vertex_count);
+        const auto* vertices = reinterpret_cast<const glm::vec4*>(bytes->data());
+        for (std::uint32_t v = 0; v < primitive.vertex_count; ++v) positions[v] = glm::vec3(vertices[v]);
+        out.back().push_back(std::move(positions));
+      }
+  }
+  return out;
+}
+
+void SceneRenderer::record_skinning(VkCommandBuffer commands, std::uint32_t slot) const {
+  memory_barrier(commands);  // the previous frame may still read the skinned vertices
+  for (const auto& instance : instances_)
+    for (const auto& mesh : instance->meshes)
+      for (const auto& primitive : mesh.primitives)
+        skin_pass_->record(context_, commands, primitive, mesh.palettes[slot], &mesh.normal_palettes[slot],
+                           mesh.morph_weights.empty() ? nullptr : &mesh.morph_weights[slot]);
+}
+
+}  // namespace proxygi::gpu

@@ -1,0 +1,37 @@
+#pragma once
+// Internal to SceneRenderer (scene_renderer.cpp, scene_meshes.cpp): its per-model and
+// per-instance GPU data.
+#include <filesystem>
+#include <vector>
+
+#include "gpu/scene_renderer.h"
+
+namespace proxygi::gpu {
+
+// The base color textures of one world model, shared by its instances.
+struct SceneRenderer::ModelTextures {
+  const world::Model* model = nullptr;
+  MaterialTextures textures;
+};
+
+// One mesh node of one instance: its primitives skinned by the node's skin, or (no skin) by a
+// one-joint palette holding the node's world matrix.
+struct MeshDraw {
+  int node = -1;
+  int skin = -1;
+  std::vector<SkinnedPrimitive> primitives;
+  std::vector<Buffer> indices;
+  std::vector<std::uint32_t> index_counts;
+  std::vector<Buffer> uvs;  // static TEXCOORD_0 per primitive; no handle when absent
+  std::vector<MaterialBinding> materials;
+  std::vector<Buffer> palettes;         // skin matrices, one buffer per ring slot, host-visible
+  std::vector<Buffer> normal_palettes;  // their inverse-transposes (anim::normal_matrix layout)
+  std::size_t morph_offset = 0;         // the node's slice of PoseBuffers::morph_weights
+  std::vector<Buffer> morph_weights;    // that slice, one buffer per ring slot; empty: no morphs
+};
+
+struct SceneRenderer::Instance {
+  std::vector<MeshDraw> meshes;
+};
+
+}  // namespace proxygi::gpu

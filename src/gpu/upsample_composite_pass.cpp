@@ -1,0 +1,53 @@
+#include "gpu/upsample_composite_pass.h"
+
+#include "shaders/shared/layouts.h"
+
+namespace proxygi::gpu {
+
+using namespace gpu_layout;
+
+Result<UpsampleCompositePass> UpsampleCompositePass::create(const Context& context) {
+  const ComputeBinding bindings[] = {{kCompositeBindFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
+                                     {kCompositeBindPositionDepth, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+                                     {kCompositeBindNormal, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+                                     {kCompositeBindReceivers, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                     {kCompositeBindShaded, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                     {kCompositeBindIrradiance, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                     {kCompositeBindAlbedo, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+                                     {kCompositeBindEnvironment, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                     {kCompositeBindHdr, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                     {kCompositeBindLdr, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+  auto pipeline = make_compute_pipeline(context, "upsample_composite.comp", bindings, sizeof(CompositePush));
+  if (!pipeline) return pipeline.error();
+  UpsampleCompositePass pass;
+  pass.pipeline_ = std::move(*pipeline);
+  return pass;
+}
+
+std::vector<ResourceAccess> UpsampleCompositePass::accesses(const Inputs& in, const Outputs& out) const {
+  return {reads(in.constants), reads(in.position_depth), reads(in.normal),     reads(in.albedo),
+          reads(in.receivers), reads(in.shaded),         reads(in.environment), writes(out.irradiance),
+          writes(out.hdr),     writes(out.ldr)};
+}
+
+void UpsampleCompositePass::record(const Context& context, VkCommandBuffer commands, const Inputs& in,
+                                   const Outputs& out) const {
+  pipeline_.bind(commands);
+  DescriptorPush()
+      .uniform_buffer(kCompositeBindFrame, *in.constants)
+      .storage_image(kCompositeBindPositionDepth, in.position_depth->view())
+      .storage_image(kCompositeBindNormal, in.normal->view())
+      .storage_buffer(kCompositeBindReceivers, *in.receivers)
+      .storage_buffer(kCompositeBindShaded, *in.shaded)
+      .storage_buffer(kCompositeBindIrradiance, *out.irradiance)
+      .storage_image(kCompositeBindAlbedo, in.albedo->view())
+      .storage_buffer(kCompositeBindEnvironment, *in.environment)
+      .storage_buffer(kCompositeBindHdr, *out.hdr)
+      .storage_buffer(kCompositeBindLdr, *out.ldr)
+      .push(context, commands, pipeline_);
+  const CompositePush push{in.environment_width, in.environment_height, 0, 0};
+  pipeline_.push_constants(commands, &push, sizeof(push));
+  dispatch_grid(commands, in.width, in.height);
+}
+
+}  // namespace proxygi::gpu

@@ -1,0 +1,41 @@
+#pragma once
+// Upsample + composite (frame steps 7 and 8 fused, upsample_composite.comp): display-resolution
+// irradiance from the 2×2 surrounding receivers (joint-bilateral eq. 11 or bilinear; the vertex
+// method's G-buffer already holds it), radiance = albedo/π · E on covered pixels and the
+// environment elsewhere, HDR and tonemapped sRGB out. CPU twins: render::upsample, render::tonemap.
+#include "base/result.h"
+#include "gpu/frame_passes.h"
+#include "gpu/pass_barriers.h"
+#include "gpu/resources.h"
+
+namespace proxygi::gpu {
+
+class UpsampleCompositePass {
+ public:
+  struct Inputs {
+    const Buffer* constants = nullptr;      // FrameConstants (composite mode, ε, exposure, tonemap)
+    const Image* position_depth = nullptr;  // G-buffer, GENERAL layout
+    const Image* normal = nullptr;          // normal (or the vertex method's irradiance)
+    const Image* albedo = nullptr;
+    const Buffer* receivers = nullptr;
+    const Buffer* shaded = nullptr;
+    const Buffer* environment = nullptr;    // equirectangular vec4 radiance
+    std::uint32_t environment_width = 0, environment_height = 0;
+    std::uint32_t width = 0, height = 0;    // display
+  };
+  struct Outputs {
+    const Buffer* irradiance = nullptr;  // vec4 per display pixel (AOV)
+    const Buffer* hdr = nullptr;         // vec4 linear radiance
+    const Buffer* ldr = nullptr;         // packed RGBA8 sRGB
+  };
+  static constexpr FramePass kPass = FramePass::upsample_composite;
+
+  static Result<UpsampleCompositePass> create(const Context& context);
+  std::vector<ResourceAccess> accesses(const Inputs& in, const Outputs& out) const;
+  void record(const Context& context, VkCommandBuffer commands, const Inputs& in, const Outputs& out) const;
+
+ private:
+  Pipeline pipeline_;
+};
+
+}  // namespace proxygi::gpu
