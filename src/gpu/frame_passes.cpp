@@ -51,6 +51,15 @@ void dispatch_grid(VkCommandBuffer commands, std::uint32_t width, std::uint32_t 
                 1);
 }
 
+VkRenderingAttachmentInfo attachment_info(const Image& image, VkImageLayout layout, VkAttachmentLoadOp load) {
+  VkRenderingAttachmentInfo info{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+  info.imageView = image.view();
+  info.imageLayout = layout;
+  info.loadOp = load;
+  info.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  return info;
+}
+
 std::string order_variant(const std::string& shader, int order) { return shader + ":order" + std::to_string(order); }
 
 }  // namespace proxygi::gpu

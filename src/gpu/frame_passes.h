@@ -18,6 +18,7 @@
 #include <string>
 
 #include "gpu/pipeline.h"
+#include "gpu/resources.h"
 #include "settings/render_settings.h"
 
 namespace proxygi::gpu {
@@ -41,6 +42,9 @@ Result<Pipeline> make_compute_pipeline(const Context& context, const std::string
                                        std::span<const ComputeBinding> bindings, std::uint32_t push_bytes = 0);
 // Dispatches kFrameLocalSize² workgroups over a width × height grid.
 void dispatch_grid(VkCommandBuffer commands, std::uint32_t width, std::uint32_t height);
+
+// A dynamic-rendering attachment of the whole image, stored after the pass.
+VkRenderingAttachmentInfo attachment_info(const Image& image, VkImageLayout layout, VkAttachmentLoadOp load);
 
 // Embedded shader names of the order- and operator-dependent variants.
 std::string order_variant(const std::string& shader, int order);  // "shadow_gather.comp:order4"

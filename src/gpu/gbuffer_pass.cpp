@@ -16,14 +16,6 @@ namespace {
 constexpr VkPipelineStageFlags2 kVertexStage = VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT;
 constexpr VkPipelineStageFlags2 kColorStage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
 
-VkRenderingAttachmentInfo cleared_attachment(const Image& image, VkImageLayout layout) {
-  VkRenderingAttachmentInfo info{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-  info.imageView = image.view();
-  info.imageLayout = layout;
-  info.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  info.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-  return info;
-}
 
 }  // namespace
 
@@ -77,10 +69,10 @@ void GbufferPass::record(const Context& context, VkCommandBuffer commands, const
   transition(commands, *out.depth, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
   VkRenderingAttachmentInfo color_attachments[3];
   for (int i = 0; i < 3; ++i) {
-    color_attachments[i] = cleared_attachment(*colors[i], VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+    color_attachments[i] = attachment_info(*colors[i], VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_ATTACHMENT_LOAD_OP_CLEAR);
     color_attachments[i].clearValue.color = {{0.0f, 0.0f, 0.0f, 0.0f}};
   }
-  VkRenderingAttachmentInfo depth = cleared_attachment(*out.depth, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
+  VkRenderingAttachmentInfo depth = attachment_info(*out.depth, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_ATTACHMENT_LOAD_OP_CLEAR);
   depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
   depth.clearValue.depthStencil = {1.0f, 0};
   VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};

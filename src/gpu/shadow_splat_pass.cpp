@@ -21,15 +21,6 @@ constexpr VkFormat kTargetFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 constexpr VkShaderStageFlags kVertex = VK_SHADER_STAGE_VERTEX_BIT;
 constexpr VkShaderStageFlags kFragment = VK_SHADER_STAGE_FRAGMENT_BIT;
 
-VkRenderingAttachmentInfo attachment(const Image& image, VkImageLayout layout, VkAttachmentLoadOp load) {
-  VkRenderingAttachmentInfo info{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-  info.imageView = image.view();
-  info.imageLayout = layout;
-  info.loadOp = load;
-  info.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-  return info;
-}
-
 }  // namespace
 
 std::vector<glm::vec4> unit_sphere_bounding_mesh(int subdivisions) {
@@ -184,7 +175,7 @@ void ShadowSplatPass::record(VkCommandBuffer commands, const ShadowSplatInputs& 
 void ShadowSplatPass::record_depth(VkCommandBuffer commands, const ShadowSplatInputs& inputs) const {
   transition(commands, depth_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
   VkRenderingAttachmentInfo depth =
-      attachment(depth_, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_ATTACHMENT_LOAD_OP_CLEAR);
+      attachment_info(depth_, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_ATTACHMENT_LOAD_OP_CLEAR);
   depth.clearValue.depthStencil = {1.0f, 0};
   VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
   rendering.renderArea = {{0, 0}, {receiver_width_, receiver_height_}};
@@ -206,11 +197,11 @@ void ShadowSplatPass::record_splat(VkCommandBuffer commands, const ShadowSplatIn
   for (const Image& target : targets_)
     transition(commands, target, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
   const VkRenderingAttachmentInfo depth =
-      attachment(depth_, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_ATTACHMENT_LOAD_OP_LOAD);
+      attachment_info(depth_, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_ATTACHMENT_LOAD_OP_LOAD);
   for (std::uint32_t pass = 0; pass < passes_; ++pass) {
     std::vector<VkRenderingAttachmentInfo> colors;
     for (std::uint32_t i = 0; i < targets_per_pass_; ++i) {
-      colors.push_back(attachment(targets_[pass * targets_per_pass_ + i], VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+      colors.push_back(attachment_info(targets_[pass * targets_per_pass_ + i], VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                                   VK_ATTACHMENT_LOAD_OP_CLEAR));
       colors.back().clearValue.color = {{0.0f, 0.0f, 0.0f, 0.0f}};
     }
