@@ -4,6 +4,7 @@
 // Path-traces one frame of a scene with Embree (the ground truth of the accuracy study) and
 // writes OUT.exr plus its feature and statistics files (ref/reference_render_io.h lists them).
 // SCENE is a scene file, or "default" / "crowd" for a built-in scene (a file by that name wins).
+// The scene is loaded and posed by world::World (the GPU renderer's rules), without proxy rigs.
 // Bad arguments or scenes exit 2, failures while rendering or writing exit 1.
 #include <cmath>
 #include <cstdio>
@@ -13,7 +14,7 @@
 #include "apps/commands.h"
 #include "image/image.h"
 #include "ref/embree_scene.h"
-#include "ref/embree_scene_load.h"
+#include "ref/scene_geometry.h"
 #include "ref/path_tracer.h"
 #include "ref/path_tracer_lighting.h"
 #include "ref/reference_render.h"
@@ -21,6 +22,7 @@
 #include "scene/camera.h"
 #include "scene/scene_defaults.h"
 #include "scene/scene_parse.h"
+#include "world/world.h"
 
 namespace proxygi::app {
 namespace {
@@ -104,9 +106,12 @@ int run_reference(const ReferenceArgs& args) {
     record.rays = old->rays;
   }
 
-  auto assets = ref::load_scene_assets(scene, assets_dir());
-  if (!assets) return fail_bad_input(assets.message());
-  auto meshes = ref::pose_scene_meshes(scene, *assets, record.time_s);
+  auto world = world::World::load(scene, {.assets_dir = assets_dir(), .load_rigs = false});
+  if (!world) return fail_bad_input(world.message());
+  world::WorldState state;
+  if (Status evaluated = (*world)->evaluate(record.time_s, std::nullopt, state); !evaluated)
+    return fail_bad_input(evaluated.message());
+  auto meshes = ref::world_meshes(**world, state, ref::make_scene_geometry(**world));
   if (!meshes) return fail_bad_input(meshes.message());
   auto geometry = ref::EmbreeScene::build(std::move(*meshes));
   if (!geometry) return fail_runtime(geometry.message());
@@ -115,7 +120,7 @@ int run_reference(const ReferenceArgs& args) {
   auto background = ref::EnvironmentLight::from_scene(scene, ref::LightingKind::full);
   if (!background) return fail_bad_input(background.message());
   const ref::PathTracer tracer(*geometry, *lighting, *background, settings);
-  const scene::CameraState camera = scene::evaluate_scene_camera(scene, record.time_s);
+  const scene::CameraState& camera = state.camera;
 
   std::fprintf(stderr, "reference: %s frame %d (t = %.3f s), %d triangles, %dx%d, %d spp (samples %u..%u), %s, %s lighting\n",
                args.scene.c_str(), args.frame, record.time_s, int(geometry->triangle_count()), width, height, args.spp,
