@@ -1,5 +1,5 @@
 // proxygi reference SCENE --frame F --spp N -o OUT.exr [--mode direct|one-bounce|multi-bounce]
-//   [--lighting sh|full] [--width W --height H] [--seed S] [--threads T] [--accumulate]
+//   [--lighting sh|full] [--lighting-order N] [--width W --height H] [--seed S] [--threads T] [--accumulate]
 //   [--guided-filter [--filter-radius R]]
 // Path-traces one frame of a scene with Embree (the ground truth of the accuracy study) and
 // writes OUT.exr plus its feature and statistics files (ref/reference_render_io.h lists them).
@@ -22,6 +22,7 @@
 #include "scene/camera.h"
 #include "scene/scene_defaults.h"
 #include "scene/scene_parse.h"
+#include "sh/basis.h"
 #include "world/world.h"
 
 namespace proxygi::app {
@@ -34,6 +35,7 @@ struct ReferenceArgs {
   std::string output;
   std::string mode = "one-bounce";
   std::string lighting = "sh";
+  int lighting_order = 0;  // 0: the scene's render.sh_order
   int width = 0;   // 0: the scene's output size
   int height = 0;
   std::uint32_t seed = 0;
@@ -73,6 +75,7 @@ int run_reference(const ReferenceArgs& args) {
   else if (args.mode == "one-bounce") settings.transport = ref::LightTransport::one_bounce;
   else settings.transport = ref::LightTransport::multi_bounce;
   const ref::LightingKind lighting_kind = args.lighting == "sh" ? ref::LightingKind::sh : ref::LightingKind::full;
+  const int lighting_order = args.lighting_order > 0 ? args.lighting_order : scene.render.sh_order;
 
   ref::ReferenceRecord record;
   record.scene = args.scene;
@@ -82,7 +85,7 @@ int run_reference(const ReferenceArgs& args) {
   record.height = height;
   record.transport = args.mode;
   record.lighting = args.lighting;
-  record.sh_order = scene.render.sh_order;
+  record.sh_order = lighting_order;
   record.seed = args.seed;
   record.guided_filter = args.guided_filter;
 
@@ -115,9 +118,9 @@ int run_reference(const ReferenceArgs& args) {
   if (!meshes) return fail_bad_input(meshes.message());
   auto geometry = ref::EmbreeScene::build(std::move(*meshes));
   if (!geometry) return fail_runtime(geometry.message());
-  auto lighting = ref::EnvironmentLight::from_scene(scene, lighting_kind);
+  auto lighting = ref::EnvironmentLight::from_scene(scene, lighting_kind, lighting_order);
   if (!lighting) return fail_bad_input(lighting.message());
-  auto background = ref::EnvironmentLight::from_scene(scene, ref::LightingKind::full);
+  auto background = ref::EnvironmentLight::from_scene(scene, ref::LightingKind::full, lighting_order);
   if (!background) return fail_bad_input(background.message());
   const ref::PathTracer tracer(*geometry, *lighting, *background, settings);
   const scene::CameraState& camera = state.camera;
@@ -189,10 +192,14 @@ void add_reference_command(CLI::App& app, CommandRunner& runner) {
       ->check(CLI::IsMember({"direct", "one-bounce", "multi-bounce"}))
       ->capture_default_str();
   command->add_option("--lighting", args->lighting,
-                      "sh: the environment band-limited to the scene's SH order and windowed, as the proxy "
+                      "sh: the environment band-limited to --lighting-order and windowed, as the proxy "
                       "method sees it; full: the environment itself (sun sampled with MIS)")
       ->check(CLI::IsMember({"sh", "full"}))
       ->capture_default_str();
+  command->add_option("--lighting-order", args->lighting_order,
+                      "SH order (bands) of the sh lighting, the reference's own band limit (default: the scene's "
+                      "render.sh_order)")
+      ->check(CLI::Range(sh::kMinOrder, sh::kMaxOrder));
   command->add_option("--width", args->width, "Image width (default: the scene's)")->check(CLI::Range(1, 16384));
   command->add_option("--height", args->height, "Image height (default: the scene's)")->check(CLI::Range(1, 16384));
   command->add_option("--seed", args->seed, "Random seed; the same seed gives the same image")->capture_default_str();

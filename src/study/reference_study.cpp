@@ -28,15 +28,14 @@ int FrameTracer::height() const { return state_->sources->scene.output.height; }
 Result<SceneSources> load_scene_sources(const ChartScene& chart, const ReferenceOptions& options) {
   SceneSources sources;
   sources.scene = chart.scene;
-  sources.scene.render.sh_order = options.reference_order;
   auto world = world::World::load(sources.scene, {.assets_dir = options.assets_dir, .load_rigs = false});
   if (!world) return world.error();
   sources.world = std::move(*world);
   sources.geometry = ref::make_scene_geometry(*sources.world);
-  auto lighting = ref::EnvironmentLight::from_scene(sources.scene, options.lighting);
+  auto lighting = ref::EnvironmentLight::from_scene(sources.scene, options.lighting, options.reference_order);
   if (!lighting) return lighting.error();
   sources.lighting = std::make_unique<ref::EnvironmentLight>(std::move(*lighting));
-  auto background = ref::EnvironmentLight::from_scene(sources.scene, ref::LightingKind::full);
+  auto background = ref::EnvironmentLight::from_scene(sources.scene, ref::LightingKind::full, options.reference_order);
   if (!background) return background.error();
   sources.background = std::make_unique<ref::EnvironmentLight>(std::move(*background));
   return sources;

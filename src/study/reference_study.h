@@ -33,7 +33,7 @@ inline constexpr std::uint32_t kTestSeed = 977;  // path-tracing rows: independe
 
 struct ReferenceOptions {
   int reference_spp = 1024;
-  int reference_order = 6;
+  int reference_order = 6;  // SH order of the sh reference lighting (its own band limit, not render.sh_order)
   ref::LightingKind lighting = ref::LightingKind::sh;
   std::filesystem::path cache_dir;
   std::filesystem::path assets_dir;
@@ -57,9 +57,9 @@ struct ImageScores {
   double flip = 0.0;  // HDR-FLIP
 };
 
-// What every frame of one chart scene shares: the scene (render.sh_order = the reference order),
-// its world (models imported once, no rigs) and decoded textures, and the reference lighting and
-// background. Made once per scene.
+// What every frame of one chart scene shares: the scene as the chart gives it, its world (models
+// imported once, no rigs) and decoded textures, and the reference lighting (SH order
+// options.reference_order) and background. Made once per scene.
 struct SceneSources {
   scene::Scene scene;
   std::unique_ptr<world::World> world;
