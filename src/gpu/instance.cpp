@@ -109,9 +109,9 @@ Result<std::unique_ptr<Instance>> Instance::create(bool validation, const std::v
   if (validation && !layer_available(kValidationLayer))
     return make_error(std::string("validation requested but ") + kValidationLayer +
                       " is not installed (Debian package vulkan-validationlayers)");
-  const auto names = merge_extensions(validation ? std::vector<std::string>{VK_EXT_DEBUG_UTILS_EXTENSION_NAME}
-                                                 : std::vector<std::string>{},
-                                      extensions);
+  const auto names = merge_extensions(
+      validation ? std::vector<std::string>{VK_EXT_DEBUG_UTILS_EXTENSION_NAME} : std::vector<std::string>{},
+      extensions);
   const auto available = instance_extensions(validation ? kValidationLayer : nullptr);
   if (const auto missing = missing_extensions(names, available); !missing.empty())
     return make_error("Vulkan instance extension " + missing.front() +

@@ -17,8 +17,8 @@ void expect_no_validation_messages(const Context& context) {
 }
 
 Result<VkSurfaceKHR> create_headless_surface(VkInstance instance) {
-  auto create = reinterpret_cast<PFN_vkCreateHeadlessSurfaceEXT>(
-      vkGetInstanceProcAddr(instance, "vkCreateHeadlessSurfaceEXT"));
+  auto create =
+      reinterpret_cast<PFN_vkCreateHeadlessSurfaceEXT>(vkGetInstanceProcAddr(instance, "vkCreateHeadlessSurfaceEXT"));
   if (!create) return make_error("vkCreateHeadlessSurfaceEXT is not available");
   VkHeadlessSurfaceCreateInfoEXT info{VK_STRUCTURE_TYPE_HEADLESS_SURFACE_CREATE_INFO_EXT};
   VkSurfaceKHR surface = VK_NULL_HANDLE;
@@ -57,12 +57,13 @@ TEST(ContextOptions, HeadlessByDefault) {
 }
 
 TEST(ContextOptions, RepeatedExtensionsAreEnabledOnce) {
-  auto context = Context::create({.device_request = "",
-                                  .validation = Validation::on,
-                                  .instance_extensions = {VK_EXT_DEBUG_UTILS_EXTENSION_NAME, VK_KHR_SURFACE_EXTENSION_NAME,
-                                                          VK_KHR_SURFACE_EXTENSION_NAME},
-                                  .device_extensions = {VK_KHR_SWAPCHAIN_EXTENSION_NAME, VK_KHR_SWAPCHAIN_EXTENSION_NAME,
-                                                        VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME}});
+  auto context =
+      Context::create({.device_request = "",
+                       .validation = Validation::on,
+                       .instance_extensions = {VK_EXT_DEBUG_UTILS_EXTENSION_NAME, VK_KHR_SURFACE_EXTENSION_NAME,
+                                               VK_KHR_SURFACE_EXTENSION_NAME},
+                       .device_extensions = {VK_KHR_SWAPCHAIN_EXTENSION_NAME, VK_KHR_SWAPCHAIN_EXTENSION_NAME,
+                                             VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME}});
   ASSERT_TRUE(context.ok()) << context.message();
   EXPECT_EQ((*context)->surface(), VK_NULL_HANDLE);
   EXPECT_NE(vkGetDeviceProcAddr((*context)->device(), "vkCreateSwapchainKHR"), nullptr);
