@@ -41,6 +41,7 @@ void add_reference_command(CLI::App& app, CommandRunner& runner);  // cmd_refere
 // `proxygi bench <study>` subcommands, one file each (apps/bench_<name>.cpp).
 void add_bench_sh_command(CLI::App& bench, CommandRunner& runner);     // bench_sh.cpp
 void add_bench_frame_command(CLI::App& bench, CommandRunner& runner);  // bench_frame.cpp
+void add_bench_record_command(CLI::App& bench, CommandRunner& runner);  // bench_record.cpp
 void add_bench_chart_command(CLI::App& bench, CommandRunner& runner);  // bench_chart.cpp
 
 }  // namespace proxygi::app

@@ -8,7 +8,7 @@ packages=(
   build-essential cmake ninja-build pkg-config git clang libclang-rt-14-dev
   # libraries
   libtinygltf-dev libglm-dev libopenmesh-dev libstb-dev nlohmann-json3-dev libcli11-dev
-  libeigen3-dev libembree-dev libtinyexr-dev libglfw3-dev libimgui-dev
+  libeigen3-dev libembree-dev libtinyexr-dev libglfw3-dev libimgui-dev libpng-dev
   # Vulkan: loader, headers, lavapipe (Mesa CPU driver), shader compiler, validation layer
   libvulkan-dev mesa-vulkan-drivers glslang-tools spirv-tools vulkan-validationlayers vulkan-tools
   # tests and benchmarks

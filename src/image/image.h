@@ -40,7 +40,18 @@ Result<ImageF> read_image(const std::filesystem::path& path, std::size_t max_pix
 Status write_png(const std::filesystem::path& path, const ImageF& image);
 // sRGB-encoded RGBA8 bytes (width × height, top row first) written as they are: the bytes
 // write_png gives for their linear decoding, without the decode and re-encode.
+// Encoded with libpng: zlib at `kPngZlibLevel`, one fixed row filter (PNG "Up"). libpng writes no
+// timestamps, so equal pixels give equal bytes for a given zlib build.
 Status write_png_rgba8(const std::filesystem::path& path, std::span<const std::uint8_t> rgba8, int width, int height);
+
+// How the PNG bytes are made. `libpng` is the encoder write_png/write_png_rgba8 use; `stb` is
+// stb_image_write at its defaults (zlib level 8, five filters tried per row), the encoder used
+// until 2026-12 (kept for `proxygi bench record`, which measures the two against each other).
+enum class PngEncoder { libpng, stb };
+inline constexpr int kPngZlibLevel = 2;  // chosen by `proxygi bench record` (README)
+Result<std::vector<std::uint8_t>> encode_png_rgba8(std::span<const std::uint8_t> rgba8, int width, int height,
+                                                   PngEncoder encoder = PngEncoder::libpng,
+                                                   int zlib_level = kPngZlibLevel);
 // Linear float OpenEXR (RGBA, 32-bit float channels, ZIP compression: lossless, bit-exact).
 Status write_exr(const std::filesystem::path& path, const ImageF& image);
 
