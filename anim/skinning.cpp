@@ -1,5 +1,7 @@
 #include "anim/skinning.h"
 
+#include "anim/skinning_kernels.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -175,7 +177,12 @@ Status SkinMatricesJob::run() const {
   return {};
 }
 
+bool skinning_kernel_available(SkinningKernel kernel) {
+  return kernel != SkinningKernel::avx2_fma || detail::avx2_fma_supported();
+}
+
 Status SkinningJob::validate() const {
+  if (!skinning_kernel_available(kernel)) return make_error("skinning: the AVX2 + FMA kernel does not run on this CPU");
   if (influences_per_vertex < 1) return make_error("skinning: influences_per_vertex must be >= 1");
   const std::size_t count = positions.size();
   const std::size_t slots = count * static_cast<std::size_t>(influences_per_vertex);
@@ -201,6 +208,10 @@ Status SkinningJob::validate() const {
 
 Status SkinningJob::run() const {
   if (Status status = validate(); !status) return status;
+  if (kernel == SkinningKernel::avx2_fma || (kernel == SkinningKernel::automatic && detail::avx2_fma_supported())) {
+    detail::skin_avx2_fma(*this);
+    return {};
+  }
   switch (influences_per_vertex) {
     case 1: skin_dispatch_normals<1>(*this); break;
     case 2: skin_dispatch_normals<2>(*this); break;

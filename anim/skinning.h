@@ -39,8 +39,15 @@ struct SkinMatricesJob {
   Status run() const;
 };
 
+// Which CPU kernel SkinningJob::run uses. `automatic`: AVX2 + FMA when the CPU has both (checked
+// at run time; the binary stays portable), else `portable` (GCC vector extensions on the target's
+// baseline, SSE2 on x86-64). The two agree up to rounding (FMA, summation order).
+enum class SkinningKernel { automatic, portable, avx2_fma };
+bool skinning_kernel_available(SkinningKernel kernel);
+
 // Linear blend skinning of one primitive's positions (and optionally normals). No allocation.
 struct SkinningJob {
+  SkinningKernel kernel = SkinningKernel::automatic;
   int influences_per_vertex = 4;              // I ≥ 1 (any number, not only 4)
   std::span<const glm::mat4> skin_matrices;   // palette: bind → world
   std::span<const glm::mat4> normal_matrices; // optional, same size as the palette. Empty: use
@@ -55,7 +62,7 @@ struct SkinningJob {
   std::span<glm::vec3> out_normals;           // empty iff normals is; world space, unit length
 
   // Sizes consistent and every joint index < palette size (one pass over `joints`).
-  Status validate() const;
+  Status validate() const;  // also: the kernel asked for runs on this CPU
   Status run() const;  // validate(), then skin
 };
 

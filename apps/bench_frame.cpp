@@ -9,6 +9,7 @@
 // fenced submit each with the CPU clock (lavapipe's timestamps are unreliable).
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <cstdio>
 
 #include <nlohmann/json.hpp>
@@ -30,6 +31,8 @@ struct BenchOptions {
   int size = 512;
   std::string device;
   std::string indirect_operator = "averaged";  // scene names (scene::names::kIndirectOperator)
+  std::vector<std::string> only;               // empty: every row; else "default", "crowd", "baselines"
+  bool runs(const std::string& part) const { return only.empty() || std::find(only.begin(), only.end(), part) != only.end(); }
 };
 
 settings::IndirectOperator indirect_operator(const std::string& name) {
@@ -120,6 +123,7 @@ int run_bench_frame(const BenchOptions& options) {
   constexpr settings::SplatMethod kSplats[] = {settings::SplatMethod::compute, settings::SplatMethod::raster};
   for (int scale : settings::kReceiverScales)
     for (settings::SplatMethod splat : kSplats) {
+      if (!options.runs("default")) break;
       auto result = run_config(**context, "default", *default_world, default_settings, scale, options, splat);
       if (!result)
         return fail_runtime("bench frame: default scene, 1/" + std::to_string(scale) + ", " + splat_name(splat) +
@@ -127,6 +131,7 @@ int run_bench_frame(const BenchOptions& options) {
       results.push_back(*result);
     }
   for (auto method : {settings::ShadingMethod::vertex, settings::ShadingMethod::ambient_occlusion}) {
+    if (!options.runs("baselines")) break;
     settings::RenderSettings baseline = default_settings;
     baseline.method = method;
     auto result = run_config(**context, "default", *default_world, baseline, 4, options);
@@ -134,6 +139,7 @@ int run_bench_frame(const BenchOptions& options) {
     results.push_back(*result);
   }
   for (settings::SplatMethod splat : kSplats) {
+    if (!options.runs("crowd")) break;
     auto crowd = run_config(**context, "crowd", *crowd_world, crowd_settings, 4, options, splat);
     if (!crowd)
       return fail_runtime("bench frame: crowd scene, " + std::string(splat_name(splat)) + " splat: " + crowd.message());
@@ -146,7 +152,9 @@ int run_bench_frame(const BenchOptions& options) {
   const auto& report = (*context)->report();
   const settings::SplatMethod default_splat = scene::default_scene().render.splat;
   const std::size_t column = default_splat == settings::SplatMethod::raster ? 1 : 0;  // results: compute, raster pairs
-  const double k1 = results[0 + column].frame_ms, k4 = results[4 + column].frame_ms;
+  const bool has_default = options.runs("default");
+  const double k1 = has_default ? results[0 + column].frame_ms : 0.0;
+  const double k4 = has_default ? results[4 + column].frame_ms : 1.0;
 
   if (options.json) {
     nlohmann::json out;
@@ -156,7 +164,7 @@ int run_bench_frame(const BenchOptions& options) {
     out["frames"] = options.frames;
     out["indirect_operator"] = options.indirect_operator;
     out["peak_resident_mib"] = peak_mib;
-    out["speedup_quarter_over_full"] = k1 / k4;
+    if (has_default) out["speedup_quarter_over_full"] = k1 / k4;
     for (const auto& result : results) {
       nlohmann::json entry = {{"scene", result.name},
                               {"method", result.method},
@@ -207,8 +215,9 @@ int run_bench_frame(const BenchOptions& options) {
                 shadow(gather), gather.pairs_per_second / 1e6, shadow(raster), raster.pairs_per_second / 1e6,
                 raster.raster_stages.depth_ms, raster.raster_stages.resolve_ms);
   }
-  std::printf("1/4 receivers with %s upsampling vs 1/1 (%s splat): %.2fx faster per frame\n", "bilateral",
-              splat_name(default_splat), k1 / k4);
+  if (has_default)
+    std::printf("1/4 receivers with %s upsampling vs 1/1 (%s splat): %.2fx faster per frame\n", "bilateral",
+                splat_name(default_splat), k1 / k4);
   std::printf("peak resident memory: %.0f MiB\n", peak_mib);
   return kExitOk;
 }
@@ -223,6 +232,9 @@ void add_bench_frame_command(CLI::App& bench, CommandRunner& runner) {
   command->add_option("--size", options->size, "Square output size in pixels")->check(CLI::Range(16, 4096));
   command->add_option("--indirect-operator", options->indirect_operator, "Indirect operator of every setting")
       ->check(CLI::IsMember({"point", "averaged", "exact"}));
+  command->add_option("--only", options->only, "Rows to run (default: all): default, baselines, crowd")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"default", "baselines", "crowd"}));
   add_device_option(*command, options->device);
   command->callback([&runner, options] { runner = [options] { return run_bench_frame(*options); }; });
 }

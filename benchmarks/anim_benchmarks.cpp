@@ -81,8 +81,11 @@ BENCHMARK(anim_local_to_model)->Name("anim/local_to_model");
 void anim_skinning(benchmark::State& state) {
   const DenseRig& rig = dense_rig();
   const int mode = static_cast<int>(state.range(0));
+  const auto kernel = static_cast<SkinningKernel>(state.range(1));
+  if (!skinning_kernel_available(kernel)) return state.SkipWithError("kernel not available on this CPU");
   std::vector<glm::vec3> out_positions(rig.positions.size()), out_normals(rig.normals.size());
   SkinningJob job;
+  job.kernel = kernel;
   job.influences_per_vertex = 4;
   job.skin_matrices = rig.pose.skin_matrices[0];
   if (mode == 2) job.normal_matrices = rig.pose.normal_matrices[0];
@@ -102,9 +105,13 @@ void anim_skinning(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(rig.positions.size()));
   static const char* const kLabels[] = {"positions", "positions+normals (mat3 of M)",
                                         "positions+normals (inverse-transpose)"};
-  state.SetLabel(std::to_string(rig.positions.size()) + " vertices, 4 influences, " + kLabels[mode]);
+  static const char* const kKernels[] = {"automatic", "portable", "avx2+fma"};
+  state.SetLabel(std::to_string(rig.positions.size()) + " vertices, 4 influences, " + kLabels[mode] + ", " +
+                 kKernels[state.range(1)] + " kernel");
 }
-BENCHMARK(anim_skinning)->Name("anim/skinning")->Arg(0)->Arg(1)->Arg(2);
+// Arguments: mode (0 positions, 1 + normals, 2 + normal matrices), kernel (SkinningKernel:
+// 0 automatic, 1 portable, 2 AVX2 + FMA).
+BENCHMARK(anim_skinning)->Name("anim/skinning")->ArgsProduct({{0, 1, 2}, {0, 1, 2}});
 
 // One whole frame on the CPU: sample, local-to-model, skin matrices, skin every primitive.
 void anim_pose_frame(benchmark::State& state) {

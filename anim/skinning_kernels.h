@@ -1,0 +1,13 @@
+#pragma once
+// Internal to anim/skinning*.cpp: the SIMD skinning kernels behind SkinningJob::run.
+#include "anim/skinning.h"
+
+namespace proxygi::anim::detail {
+
+// True when this CPU runs AVX2 and FMA (checked once, __builtin_cpu_supports).
+bool avx2_fma_supported();
+// SkinningJob::run's work on an already validated job, AVX2 + FMA (skinning_avx2.cpp); only call
+// when avx2_fma_supported().
+void skin_avx2_fma(const SkinningJob& job);
+
+}  // namespace proxygi::anim::detail
