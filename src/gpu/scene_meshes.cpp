@@ -1,6 +1,8 @@
 // SceneRenderer's GPU meshes: every instance's primitives uploaded once in bind pose for the skin
 // pass (with a palette per ring slot), the ground and the static meshes in world space.
 #include <cstring>
+#include <map>
+#include <tuple>
 
 #include "anim/posed_character.h"
 #include "anim/skinning.h"
@@ -20,6 +22,12 @@ Status SceneRenderer::upload_instances() {
     model_textures_.push_back(std::make_unique<ModelTextures>(ModelTextures{model.get(), std::move(*textures)}));
   }
   instances_.clear();
+  // Index and uv buffers depend only on the model's primitive: uploaded once per model and
+  // shared by its instances (the crowd's 20 mannequins hold one copy).
+  struct Shared {
+    std::shared_ptr<const Buffer> indices, uvs;
+  };
+  std::map<std::tuple<const world::Model*, std::size_t, std::size_t>, Shared> shared;
   for (std::size_t index = 0; index < world_->instances().size(); ++index) {
     const world::CharacterInstance& source = world_->instances()[index];
     const MaterialTextures* textures = nullptr;
@@ -43,19 +51,23 @@ Status SceneRenderer::upload_instances() {
         }
         auto uploaded = SkinPass::upload(context_, primitive);
         if (!uploaded) return uploaded.error();
-        auto indices = create_buffer_with_data(context_, as_bytes(std::span<const std::uint32_t>(primitive.indices)),
-                                               VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
-        if (!indices) return indices.error();
-        draw.primitives.push_back(std::move(*uploaded));
-        draw.indices.push_back(std::move(*indices));
-        draw.index_counts.push_back(std::uint32_t(primitive.indices.size()));
-        draw.uvs.emplace_back();
-        if (!primitive.uvs.empty()) {
-          auto uvs = create_buffer_with_data(context_, as_bytes(std::span<const glm::vec2>(primitive.uvs)),
-                                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-          if (!uvs) return uvs.error();
-          draw.uvs.back() = std::move(*uvs);
+        Shared& buffers = shared[{source.model, node, draw.index_counts.size()}];
+        if (!buffers.indices) {
+          auto indices = create_buffer_with_data(context_, as_bytes(std::span<const std::uint32_t>(primitive.indices)),
+                                                 VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+          if (!indices) return indices.error();
+          buffers.indices = std::make_shared<const Buffer>(std::move(*indices));
+          if (!primitive.uvs.empty()) {
+            auto uvs = create_buffer_with_data(context_, as_bytes(std::span<const glm::vec2>(primitive.uvs)),
+                                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+            if (!uvs) return uvs.error();
+            buffers.uvs = std::make_shared<const Buffer>(std::move(*uvs));
+          }
         }
+        draw.primitives.push_back(std::move(*uploaded));
+        draw.indices.push_back(buffers.indices);
+        draw.index_counts.push_back(std::uint32_t(primitive.indices.size()));
+        draw.uvs.push_back(buffers.uvs);
         draw.materials.push_back(textures->binding(primitive.material));
       }
       for (std::uint32_t slot = 0; slot < slots; ++slot)

@@ -160,9 +160,9 @@ Result<std::vector<DrawItem>> SceneRenderer::prepare(const FrameRequest& request
         std::memcpy(mesh.morph_weights[slot].mapped(), pose.morph_weights.data() + mesh.morph_offset,
                     std::size_t(mesh.morph_weights[slot].size()));
       for (std::size_t i = 0; i < mesh.primitives.size(); ++i)
-        draws.push_back({&mesh.primitives[i].world_positions, &mesh.primitives[i].world_normals, &mesh.indices[i],
+        draws.push_back({&mesh.primitives[i].world_positions, &mesh.primitives[i].world_normals, mesh.indices[i].get(),
                          mesh.index_counts[i], mesh.materials[i].base_color,
-                         mesh.uvs[i].handle() != VK_NULL_HANDLE ? &mesh.uvs[i] : nullptr, mesh.materials[i].texture});
+                         mesh.uvs[i].get(), mesh.materials[i].texture});
     }
   }
   for (const auto& mesh : static_meshes_) draws.push_back(mesh.draw());

@@ -2,6 +2,7 @@
 // Internal to SceneRenderer (scene_renderer.cpp, scene_meshes.cpp): its per-model and
 // per-instance GPU data.
 #include <filesystem>
+#include <memory>
 #include <vector>
 
 #include "gpu/scene_renderer.h"
@@ -20,9 +21,10 @@ struct MeshDraw {
   int node = -1;
   int skin = -1;
   std::vector<SkinnedPrimitive> primitives;
-  std::vector<Buffer> indices;
+  // Static per-model data, one copy shared by every instance of the model (upload_instances).
+  std::vector<std::shared_ptr<const Buffer>> indices;
   std::vector<std::uint32_t> index_counts;
-  std::vector<Buffer> uvs;  // static TEXCOORD_0 per primitive; no handle when absent
+  std::vector<std::shared_ptr<const Buffer>> uvs;  // static TEXCOORD_0 per primitive; null when absent
   std::vector<MaterialBinding> materials;
   std::vector<Buffer> palettes;         // skin matrices, one buffer per ring slot, host-visible
   std::vector<Buffer> normal_palettes;  // their inverse-transposes (anim::normal_matrix layout)
