@@ -49,6 +49,7 @@ void add_bench_command(CLI::App& app, CommandRunner& runner) {
   add_bench_sh_command(*bench, runner);
   add_bench_frame_command(*bench, runner);
   add_bench_record_command(*bench, runner);
+  add_bench_sampler_command(*bench, runner);
   add_bench_chart_command(*bench, runner);
 }
 

@@ -1,5 +1,5 @@
 // proxygi reference SCENE --frame F --spp N -o OUT.exr [--mode direct|one-bounce|multi-bounce]
-//   [--lighting sh|full] [--lighting-order N] [--width W --height H] [--seed S] [--threads T] [--accumulate]
+//   [--lighting sh|full] [--lighting-order N] [--width W --height H] [--seed S] [--sampler sobol|random] [--threads T] [--accumulate]
 //   [--guided-filter [--filter-radius R]]
 // Path-traces one frame of a scene with Embree (the ground truth of the accuracy study) and
 // writes OUT.exr plus its feature and statistics files (ref/reference_render_io.h lists them).
@@ -39,6 +39,7 @@ struct ReferenceArgs {
   int width = 0;   // 0: the scene's output size
   int height = 0;
   std::uint32_t seed = 0;
+  std::string sampler = "sobol";
   int threads = 0;
   bool accumulate = false;
   bool guided_filter = false;
@@ -87,6 +88,7 @@ int run_reference(const ReferenceArgs& args) {
   record.lighting = args.lighting;
   record.sh_order = lighting_order;
   record.seed = args.seed;
+  record.sampler = args.sampler;
   record.guided_filter = args.guided_filter;
 
   const ref::ReferencePaths paths = ref::reference_paths(args.output);
@@ -134,6 +136,7 @@ int run_reference(const ReferenceArgs& args) {
   job.spp = args.spp;
   job.first_sample = record.samples;
   job.seed = args.seed;
+  job.sampler = args.sampler == "random" ? ref::Sampler::random : ref::Sampler::sobol;
   job.threads = args.threads;
   ref::RenderStats stats;
   auto progress = [](const ref::RenderProgress& p) {
@@ -203,6 +206,10 @@ void add_reference_command(CLI::App& app, CommandRunner& runner) {
   command->add_option("--width", args->width, "Image width (default: the scene's)")->check(CLI::Range(1, 16384));
   command->add_option("--height", args->height, "Image height (default: the scene's)")->check(CLI::Range(1, 16384));
   command->add_option("--seed", args->seed, "Random seed; the same seed gives the same image")->capture_default_str();
+  command->add_option("--sampler", args->sampler,
+                      "sobol: Owen-scrambled Sobol pairs (default); random: plain Monte Carlo (before 2026-12)")
+      ->check(CLI::IsMember({"sobol", "random"}))
+      ->capture_default_str();
   command->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(0, 1024));
   command->add_flag("--accumulate", args->accumulate,
                     "Continue from OUT's previous samples (same scene, frame, size, mode, lighting and seed)");

@@ -42,6 +42,7 @@ void add_reference_command(CLI::App& app, CommandRunner& runner);  // cmd_refere
 void add_bench_sh_command(CLI::App& bench, CommandRunner& runner);     // bench_sh.cpp
 void add_bench_frame_command(CLI::App& bench, CommandRunner& runner);  // bench_frame.cpp
 void add_bench_record_command(CLI::App& bench, CommandRunner& runner);  // bench_record.cpp
+void add_bench_sampler_command(CLI::App& bench, CommandRunner& runner);  // bench_sampler.cpp
 void add_bench_chart_command(CLI::App& bench, CommandRunner& runner);  // bench_chart.cpp
 
 }  // namespace proxygi::app

@@ -35,7 +35,7 @@ void render_tile(const PathTracer& tracer, const scene::CameraState& camera, con
       const std::uint32_t pixel = std::uint32_t(y) * std::uint32_t(job.width) + std::uint32_t(x);
       glm::dvec3 radiance(0.0), squared(0.0), indirect(0.0);
       for (int s = 0; s < job.spp; ++s) {
-        SampleStream random(job.seed, pixel, job.first_sample + std::uint32_t(s));
+        SampleStream random(job.seed, pixel, job.first_sample + std::uint32_t(s), job.sampler);
         const glm::vec2 jitter = random.next_2d();
         const scene::Ray ray = scene::ray_through_pixel(camera, job.width, job.height, float(x) + jitter.x,
                                                         float(y) + jitter.y);

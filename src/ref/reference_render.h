@@ -3,7 +3,7 @@
 // deterministic output.
 //
 // Per pixel (x, y) (framebuffer convention of scene/camera.h: y down, centers at +0.5), sample
-// index s in [first_sample, first_sample + spp): SampleStream(seed, y * width + x, s); the first
+// index s in [first_sample, first_sample + spp): SampleStream(seed, y * width + x, s, sampler); the first
 // two numbers jitter the camera position uniformly inside the pixel, (x + u0, y + u1), the ray is
 // scene::ray_through_pixel at that position, the rest drive the path. Pixels are computed by one
 // thread each, samples summed in index order, so the image does not depend on the thread count
@@ -35,6 +35,7 @@ struct RenderJob {
   int spp = 16;                 // samples per pixel traced by this job (>= 1)
   std::uint32_t first_sample = 0;  // index of the first sample (resume: the samples already done)
   std::uint32_t seed = 0;
+  Sampler sampler = Sampler::sobol;  // ref/sampling.h
   int threads = 0;              // 0: std::thread::hardware_concurrency()
   int tile_size = 16;           // pixels per tile edge
 };

@@ -22,7 +22,7 @@ nlohmann::json to_json(const ReferenceRecord& r) {
   return {{"scene", r.scene},       {"frame", r.frame},         {"time_s", r.time_s},
           {"width", r.width},       {"height", r.height},       {"transport", r.transport},
           {"lighting", r.lighting}, {"sh_order", r.sh_order},   {"seed", r.seed},
-          {"samples", r.samples},   {"guided_filter", r.guided_filter},
+          {"sampler", r.sampler},   {"samples", r.samples},   {"guided_filter", r.guided_filter},
           {"seconds", r.seconds},   {"rays", r.rays}};
 }
 
@@ -57,6 +57,7 @@ Result<ReferenceRecord> read_record(const std::filesystem::path& path) {
     r.lighting = j.at("lighting").get<std::string>();
     r.sh_order = j.at("sh_order").get<int>();
     r.seed = j.at("seed").get<std::uint32_t>();
+    r.sampler = j.value("sampler", std::string("random"));
     r.samples = j.at("samples").get<std::uint32_t>();
     r.guided_filter = j.at("guided_filter").get<bool>();
     r.seconds = j.at("seconds").get<double>();
@@ -77,7 +78,8 @@ std::string record_mismatch(const ReferenceRecord& previous, const ReferenceReco
        {differs("scene", previous.scene, current.scene), differs("frame", previous.frame, current.frame),
         differs("width", previous.width, current.width), differs("height", previous.height, current.height),
         differs("mode", previous.transport, current.transport), differs("lighting", previous.lighting, current.lighting),
-        differs("sh_order", previous.sh_order, current.sh_order), differs("seed", previous.seed, current.seed)})
+        differs("sh_order", previous.sh_order, current.sh_order), differs("seed", previous.seed, current.seed),
+        differs("sampler", previous.sampler, current.sampler)})
     if (!difference.empty()) return difference;
   return {};
 }

@@ -41,6 +41,7 @@ struct ReferenceRecord {
   std::string lighting;   // "sh", "full"
   int sh_order = 0;       // the lighting order (--lighting-order; used when lighting is "sh")
   std::uint32_t seed = 0;
+  std::string sampler = "sobol";  // ref::sampler_name; records without it were made by "random"
   std::uint32_t samples = 0;  // per pixel, all runs together
   bool guided_filter = false;
   double seconds = 0.0;   // tracing time, all runs together

@@ -60,8 +60,9 @@ Result<std::unique_ptr<FrameTracer>> FrameTracer::create(const SceneSources& sou
 }
 
 Result<ref::SampleSums> FrameTracer::trace(int spp, std::uint32_t seed, std::uint32_t first_sample,
-                                           ref::RenderStats* stats, bool progress) const {
+                                           ref::RenderStats* stats, bool progress, ref::Sampler sampler) const {
   ref::RenderJob job;
+  job.sampler = sampler;
   job.width = width();
   job.height = height();
   job.spp = spp;

@@ -77,7 +77,7 @@ class FrameTracer {
   ~FrameTracer();
   // Traces `spp` samples with `seed` from sample 0 (all cores); seconds = tracing wall time.
   Result<ref::SampleSums> trace(int spp, std::uint32_t seed, std::uint32_t first_sample, ref::RenderStats* stats,
-                                bool progress) const;
+                                bool progress, ref::Sampler sampler = ref::Sampler::sobol) const;
   ref::PixelFeatures features() const;
   int width() const;
   int height() const;
