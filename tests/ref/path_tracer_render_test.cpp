@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include "small_scene.h"
+
 #include "image/image.h"
 #include "ref/embree_scene.h"
 #include "ref/path_tracer.h"
@@ -23,22 +25,8 @@
 namespace proxygi::ref {
 namespace {
 
-EmbreeScene small_scene() {
-  std::vector<TriangleMesh> meshes = ground_meshes(scene::Ground{true, 6.0f, glm::vec3(0.8f)});
-  const SphereShape spheres[] = {{{0.0f, 0.6f, 0.0f}, 0.5f, SurfaceMaterial{glm::vec3(0.9f, 0.2f, 0.2f), nullptr}},
-                                 {{1.0f, 0.3f, 0.5f}, 0.3f, SurfaceMaterial{glm::vec3(0.2f, 0.9f, 0.2f), nullptr}}};
-  auto scene = EmbreeScene::build(std::move(meshes), spheres);
-  EXPECT_TRUE(scene.ok()) << (scene.ok() ? "" : scene.message());
-  return std::move(*scene);
-}
-
-scene::CameraState small_camera() {
-  scene::CameraState camera;
-  camera.eye = glm::vec3(0.5f, 2.0f, 4.0f);
-  camera.target = glm::vec3(0.0f, 0.4f, 0.0f);
-  camera.fov_y_degrees = 50.0f;
-  return camera;
-}
+using test_scenes::small_camera;
+using test_scenes::small_scene;
 
 bool same_bits(const SampleSums& a, const SampleSums& b) {
   auto bits = [](const std::vector<glm::dvec3>& x, const std::vector<glm::dvec3>& y) {

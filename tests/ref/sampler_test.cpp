@@ -13,6 +13,7 @@
 #include "ref/reference_render.h"
 #include "ref/sampling.h"
 #include "ref/scene_geometry.h"
+#include "small_scene.h"
 
 namespace proxygi::ref {
 namespace {
@@ -49,26 +50,14 @@ TEST(SobolSampler, StreamsAreDeterministicAndSeedDependent) {
   }
 }
 
-EmbreeScene small_scene() {
-  std::vector<TriangleMesh> meshes = ground_meshes(scene::Ground{true, 6.0f, glm::vec3(0.8f)});
-  const SphereShape spheres[] = {{{0.0f, 0.6f, 0.0f}, 0.5f, SurfaceMaterial{glm::vec3(0.9f, 0.2f, 0.2f), nullptr}},
-                                 {{1.0f, 0.3f, 0.5f}, 0.3f, SurfaceMaterial{glm::vec3(0.2f, 0.9f, 0.2f), nullptr}}};
-  auto scene = EmbreeScene::build(std::move(meshes), spheres);
-  EXPECT_TRUE(scene.ok()) << (scene.ok() ? "" : scene.message());
-  return std::move(*scene);
-}
-
 // Same scene, two samplers, two seeds each: the image means agree within noise (per pixel and
 // over the image), and Sobol's variance of the mean, estimated from its two seeds, is lower.
 TEST(SobolSampler, SameMeansAsRandomWithinNoiseAndLessNoise) {
-  const EmbreeScene geometry = small_scene();
+  const EmbreeScene geometry = test_scenes::small_scene();
   const scene::Environment environment;  // analytic sky with a sun: both light strategies
   const EnvironmentLight light = EnvironmentLight::analytic_sky(environment);
   const PathTracer tracer(geometry, light, light, PathTracerSettings{LightTransport::one_bounce});
-  scene::CameraState camera;
-  camera.eye = glm::vec3(0.5f, 2.0f, 4.0f);
-  camera.target = glm::vec3(0.0f, 0.4f, 0.0f);
-  camera.fov_y_degrees = 50.0f;
+  const scene::CameraState camera = test_scenes::small_camera();
   RenderJob job;
   job.width = 24;
   job.height = 20;
