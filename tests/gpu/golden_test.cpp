@@ -41,5 +41,34 @@ TEST_F(GoldenTest, DefaultSceneFramesMatchGoldens) {
   }
 }
 
+// The 20-mannequin crowd at 128×128 (frames 0 and 3; goldens rendered by the renderer before
+// the crowd's per-model buffer sharing, 2026-12-02): speed work on the crowd (shared buffers,
+// batched draws or dispatches) must keep its frames bit-identical on lavapipe.
+TEST_F(GoldenTest, CrowdFramesMatchGoldens) {
+  scene::Scene scene = scene::crowd_scene();
+  scene.output.width = scene.output.height = 128;
+  auto renderer = SceneRenderer::create(context(), scene, {PROXYGI_SOURCE_DIR "/assets", false});
+  ASSERT_TRUE(renderer.ok()) << renderer.message();
+  const bool update = std::getenv("PROXYGI_UPDATE_GOLDEN") != nullptr;
+  const bool reference_driver = context().report().name.find("llvmpipe") != std::string::npos;
+  for (int frame : {0, 3}) {
+    auto rendered = (*renderer)->render(frame);
+    ASSERT_TRUE(rendered.ok()) << rendered.message();
+    const std::filesystem::path golden =
+        std::filesystem::path(PROXYGI_SOURCE_DIR) / "tests/golden" / ("crowd_128_frame" + std::to_string(frame) + ".png");
+    if (update) {
+      ASSERT_TRUE(run::write_golden(rendered->ldr, 128, 128, golden).ok());
+      continue;
+    }
+    auto comparison = run::compare_with_golden(rendered->ldr, 128, 128, golden);
+    ASSERT_TRUE(comparison.ok()) << comparison.message() << " (PROXYGI_UPDATE_GOLDEN=1 makes it)";
+    EXPECT_TRUE(comparison->passed) << "frame " << frame << ": " << comparison->failing_pixels
+                                    << " pixels differ by more than 5/255";
+    if (reference_driver) {
+      EXPECT_EQ(comparison->differing_pixels, 0) << "frame " << frame << ": the goldens were made on lavapipe";
+    }
+  }
+}
+
 }  // namespace
 }  // namespace proxygi::gpu
