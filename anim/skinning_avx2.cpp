@@ -132,6 +132,20 @@ void dispatch_normals(const SkinningJob& job) {
 
 }  // namespace
 
+// The largest joint index (SkinningJob::validate's range check), 16 lanes at a time.
+PROXYGI_AVX2 std::uint16_t max_joint_avx2(std::span<const std::uint16_t> joints) {
+  __m256i best = _mm256_setzero_si256();
+  std::size_t i = 0;
+  for (; i + 16 <= joints.size(); i += 16)
+    best = _mm256_max_epu16(best, _mm256_loadu_si256(reinterpret_cast<const __m256i*>(joints.data() + i)));
+  alignas(32) std::uint16_t lanes[16];
+  _mm256_store_si256(reinterpret_cast<__m256i*>(lanes), best);
+  std::uint16_t result = 0;
+  for (std::uint16_t lane : lanes) result = lane > result ? lane : result;
+  for (; i < joints.size(); ++i) result = joints[i] > result ? joints[i] : result;
+  return result;
+}
+
 bool avx2_fma_supported() {
   static const bool supported = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
   return supported;
@@ -152,6 +166,7 @@ void skin_avx2_fma(const SkinningJob& job) {
 #else  // not x86: no AVX2 kernel
 
 namespace proxygi::anim::detail {
+std::uint16_t max_joint_avx2(std::span<const std::uint16_t>) { return 0; }
 bool avx2_fma_supported() { return false; }
 void skin_avx2_fma(const SkinningJob&) {}
 }  // namespace proxygi::anim::detail

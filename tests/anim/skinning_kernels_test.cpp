@@ -106,6 +106,27 @@ TEST(SkinningKernels, Avx2EqualsPortableWithinRounding) {
   }
 }
 
+// The range check scans the joints 16 at a time with AVX2: an index out of range anywhere (in a
+// full block or the tail) is still found, by every kernel.
+TEST(SkinningKernels, JointRangeCheckSeesEveryIndex) {
+  Case c = make_case(4, 5u);
+  for (std::size_t at : {std::size_t(0), std::size_t(17), c.joints.size() / 2, c.joints.size() - 1}) {
+    Case broken = c;
+    broken.joints[at] = std::uint16_t(broken.palette.size());
+    for (SkinningKernel kernel : {SkinningKernel::automatic, SkinningKernel::portable}) {
+      std::vector<glm::vec3> out(broken.positions.size());
+      SkinningJob job;
+      job.kernel = kernel;
+      job.skin_matrices = broken.palette;
+      job.joints = broken.joints;
+      job.weights = broken.weights;
+      job.positions = broken.positions;
+      job.out_positions = out;
+      EXPECT_FALSE(job.validate().ok()) << "joint slot " << at;
+    }
+  }
+}
+
 TEST(SkinningKernels, AutomaticPicksAnAvailableKernel) {
   EXPECT_TRUE(skinning_kernel_available(SkinningKernel::automatic));
   EXPECT_TRUE(skinning_kernel_available(SkinningKernel::portable));
