@@ -17,11 +17,18 @@ struct Job {
 };
 
 bool wanted(const RunOptions& options, const std::string& scenario, const std::string& check) {
-  if (options.filters.empty()) return true;
   const std::string id = scenario + "/" + check;
-  for (const std::string& filter : options.filters)
-    if (id.find(filter) != std::string::npos || matches_pattern(filter, scenario, check)) return true;
-  return false;
+  auto hit = [&](const std::string& f) { return id.find(f) != std::string::npos || matches_pattern(f, scenario, check); };
+  bool any_positive = false, included = false;
+  for (const std::string& filter : options.filters) {
+    if (!filter.empty() && filter[0] == '!') {
+      if (hit(filter.substr(1))) return false;
+    } else {
+      any_positive = true;
+      included = included || hit(filter);
+    }
+  }
+  return !any_positive || included;
 }
 
 Status run_check(CheckContext& c) {

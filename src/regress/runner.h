@@ -25,7 +25,7 @@ struct RunOptions {
   std::filesystem::path assets_dir;
   std::optional<std::filesystem::path> golden_root;  // default: <scenario folder>/goldens
   run::Shard shard;
-  std::vector<std::string> filters;  // substrings of "scenario/check"; any may match; empty: all
+  std::vector<std::string> filters;  // substrings or globs of "scenario/check"; any may match; "!F" excludes
   std::vector<std::string> bless;    // glob patterns on "scenario/check" (or on the check name alone)
   Fault fault;                       // sensitivity runs
   std::optional<std::filesystem::path> report_dir;  // images of each check are written under it
