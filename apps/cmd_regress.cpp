@@ -126,7 +126,7 @@ void add_regress_command(CLI::App& app, CommandRunner& runner) {
                  "goldens keyed by device family; exit 0 all pass, 1 a check failed or is new, 2 bad input");
   command->add_option("scenarios", args->inputs, "Scenario files, or folders of them");
   command->add_option("--filter", args->filters, "Only checks whose scenario/check contains this (repeatable)");
-  command->add_option("--shard", args->shard, "I/N: only every N-th scenario/check from the I-th (0-based)");
+  command->add_option("--shard", args->shard, "I/N: only the I-th (0-based) of N contiguous runs of the scenario/check list");
   command->add_option("--bless", args->bless, "Write goldens of these checks (scenario/check, globs allowed)")->expected(1, -1);
   command->add_option("--report", args->report, "Write report.html, results.json and junit.xml into this folder");
   command->add_option("--goldens", args->goldens, "Golden folder (default: goldens/ beside each scenario)");

@@ -53,14 +53,15 @@ Result<RunResults> run_regression(gpu::Context& context, const std::vector<Scena
   RunResults results;
   results.device = context.report().name;
   results.family = device_family(results.device);
-  // Every wanted scenario/check in order; this shard takes every count-th from its index.
-  std::vector<Job> jobs;
-  std::size_t index = 0;
+  // Every wanted scenario/check in order; shard I of N takes the I-th of N contiguous, balanced
+  // runs of that list, so a scenario's world is loaded by at most two shards.
+  std::vector<Job> all;
   for (const Scenario& scenario : scenarios)
-    for (const Check& check : scenario.checks) {
-      if (!wanted(options, scenario.name, check.name)) continue;
-      if (int(index++ % std::size_t(options.shard.count)) == options.shard.index) jobs.push_back({&scenario, &check});
-    }
+    for (const Check& check : scenario.checks)
+      if (wanted(options, scenario.name, check.name)) all.push_back({&scenario, &check});
+  const std::size_t count = std::size_t(options.shard.count), index = std::size_t(options.shard.index);
+  const std::vector<Job> jobs(all.begin() + std::ptrdiff_t(all.size() * index / count),
+                              all.begin() + std::ptrdiff_t(all.size() * (index + 1) / count));
   std::unique_ptr<ScenarioRun> run;
   const Scenario* loaded = nullptr;
   for (const Job& job : jobs) {

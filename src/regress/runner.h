@@ -2,7 +2,7 @@
 // The regression runner behind `proxygi regress`: every (scenario, check) of this shard, in
 // order, against goldens (golden_store.h) or, for golden-free checks, against a second render.
 // Deterministic: the same scenarios, goldens and driver give byte-identical results.json, and
-// shards (run::Shard over the sorted list of scenario/check pairs) merge into exactly that.
+// shards (run::Shard: the I-th of N contiguous runs of the scenario/check list) merge into exactly that.
 //
 //   auto results = regress::run_regression(context, scenarios, {.assets_dir = assets});
 //   return results->exit_code();   // 0 all pass, 1 a check failed or has no golden
