@@ -55,6 +55,16 @@ void print_result(const regress::CheckResult& c, double seconds) {
   std::fflush(stdout);
 }
 
+// Prints a Markdown table and keeps it as REPORT/name when a report folder is given.
+Status print_table(const std::string& table, const std::string& report, const char* name) {
+  std::printf("%s", table.c_str());
+  if (report.empty()) return {};
+  std::error_code error;
+  std::filesystem::create_directories(report, error);
+  if (error) return make_error(report + ": " + error.message());
+  return write_file_atomically(std::filesystem::path(report) / name, std::string_view(table));
+}
+
 int run_regress(const RegressArgs& args) {
   if (!args.merge.empty()) return run_merge(args);
   if (args.inputs.empty()) return fail_bad_input("regress: give scenario files or folders (or --merge)");
@@ -80,12 +90,7 @@ int run_regress(const RegressArgs& args) {
     auto rows = regress::calibrate(**context, *scenarios, options, std::max(2, args.calibrate));
     if (!rows) return fail_runtime(rows.message());
     const std::string table = regress::calibration_table(*rows);
-    std::printf("%s", table.c_str());
-    if (!args.report.empty()) {
-      std::filesystem::create_directories(args.report);
-      if (Status s = write_file_atomically(std::filesystem::path(args.report) / "calibration.md", std::string_view(table)); !s)
-        return fail_runtime(s.message());
-    }
+    if (Status s = print_table(table, args.report, "calibration.md"); !s) return fail_runtime(s.message());
     return kExitOk;
   }
   if (args.sensitivity) {
@@ -93,12 +98,7 @@ int run_regress(const RegressArgs& args) {
     auto report = regress::sensitivity(**context, *scenarios, options);
     if (!report) return fail_runtime(report.message());
     const std::string table = regress::sensitivity_table(*report);
-    std::printf("%s", table.c_str());
-    if (!args.report.empty()) {
-      std::filesystem::create_directories(args.report);
-      if (Status s = write_file_atomically(std::filesystem::path(args.report) / "sensitivity.md", std::string_view(table)); !s)
-        return fail_runtime(s.message());
-    }
+    if (Status s = print_table(table, args.report, "sensitivity.md"); !s) return fail_runtime(s.message());
     return report->passed() ? kExitOk : kExitFailure;
   }
 

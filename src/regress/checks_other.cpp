@@ -40,6 +40,24 @@ double mean_change(const RenderedFrame& a, const RenderedFrame& b, Region region
   return count ? sum / double(count * 3) : 0.0;
 }
 
+// Blessing writes `text` as the golden `file`; without a golden the check is "new". True when
+// either happened (the check is done), else the caller compares against the golden's tier.
+Result<bool> bless_or_new(CheckContext& c, bool has_golden, const char* file, const std::string& text,
+                          const std::string& blessed, const std::string& missing) {
+  if (c.bless) {
+    if (Status s = write_golden_text(c.store.bless_path(c.result.scenario, c.check.name, file), text); !s) return s.error();
+    c.result.outcome = Outcome::blessed;
+    c.result.message = blessed;
+    return true;
+  }
+  if (!has_golden) {
+    c.result.outcome = Outcome::new_golden;
+    c.result.message = missing + " (device family " + c.store.family + ")";
+    return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 Status run_tracks_check(CheckContext& c) {
@@ -54,22 +72,16 @@ Status run_tracks_check(CheckContext& c) {
     if (!parsed) return parsed.error();
     golden = std::move(*parsed);
   }
-  if (c.bless) {
-    if (golden) {
-      CheckResult before = c.result;
-      compare_tracks(*tracks, *golden, c.check, 1.0, before);
-      c.result.details.push_back("was: " + before.message);
-    }
-    if (Status s = write_golden_text(c.store.bless_path(c.result.scenario, c.check.name, "tracks.json"), tracks_to_json(*tracks)); !s) return s;
-    c.result.outcome = Outcome::blessed;
-    c.result.message = "blessed tracks of " + std::to_string(tracks->size()) + " frames into the " + c.store.family + " tier";
-    return {};
+  if (c.bless && golden) {
+    CheckResult before = c.result;
+    compare_tracks(*tracks, *golden, c.check, 1.0, before);
+    c.result.details.push_back("was: " + before.message);
   }
-  if (!golden) {
-    c.result.outcome = Outcome::new_golden;
-    c.result.message = "no tracks golden (device family " + c.store.family + ")";
-    return {};
-  }
+  auto done = bless_or_new(c, golden.has_value(), "tracks.json", tracks_to_json(*tracks),
+                           "blessed tracks of " + std::to_string(tracks->size()) + " frames into the " + c.store.family + " tier",
+                           "no tracks golden");
+  if (!done) return done.error();
+  if (*done) return {};
   c.result.tier = *tier;
   compare_tracks(*tracks, *golden, c.check, *tier == std::string(kFallbackTier) ? c.check.fallback_scale : 1.0, c.result);
   return {};
@@ -98,17 +110,11 @@ Status run_temporal_check(CheckContext& c) {
       return make_error(c.result.scenario + "/" + c.check.name + ": temporal.json: " + e.what());
     }
   }
-  if (c.bless) {
-    if (Status s = write_golden_text(c.store.bless_path(c.result.scenario, c.check.name, "temporal.json"), document.dump() + "\n"); !s) return s;
-    c.result.outcome = Outcome::blessed;
-    c.result.message = "blessed the frame-to-frame change of " + std::to_string(change.size()) + " frame pairs";
-    return {};
-  }
-  if (!golden) {
-    c.result.outcome = Outcome::new_golden;
-    c.result.message = "no temporal golden for these frames (device family " + c.store.family + ")";
-    return {};
-  }
+  auto done = bless_or_new(c, golden.has_value(), "temporal.json", document.dump() + "\n",
+                           "blessed the frame-to-frame change of " + std::to_string(change.size()) + " frame pairs",
+                           "no temporal golden for these frames");
+  if (!done) return done.error();
+  if (*done) return {};
   c.result.tier = *tier;
   const double tolerance = c.check.temporal_tolerance * (*tier == std::string(kFallbackTier) ? c.check.fallback_scale : 1.0);
   c.result.metric = "|change - golden change| (codes)";
