@@ -65,6 +65,14 @@ Status print_table(const std::string& table, const std::string& report, const ch
   return write_file_atomically(std::filesystem::path(report) / name, std::string_view(table));
 }
 
+// With PROXYGI_VALIDATION=1 (the tests) any validation message fails the run.
+int validation_failure(const gpu::Context& context) {
+  const auto messages = context.validation_messages();
+  if (messages.empty()) return kExitOk;
+  for (const std::string& message : messages) std::fprintf(stderr, "validation: %s\n", message.c_str());
+  return fail_runtime("regress: " + std::to_string(messages.size()) + " Vulkan validation messages");
+}
+
 int run_regress(const RegressArgs& args) {
   if (!args.merge.empty()) return run_merge(args);
   if (args.inputs.empty()) return fail_bad_input("regress: give scenario files or folders (or --merge)");
@@ -91,7 +99,7 @@ int run_regress(const RegressArgs& args) {
     if (!rows) return fail_runtime(rows.message());
     const std::string table = regress::calibration_table(*rows);
     if (Status s = print_table(table, args.report, "calibration.md"); !s) return fail_runtime(s.message());
-    return kExitOk;
+    return validation_failure(**context);
   }
   if (args.sensitivity) {
     options.on_result = nullptr;
@@ -99,15 +107,13 @@ int run_regress(const RegressArgs& args) {
     if (!report) return fail_runtime(report.message());
     const std::string table = regress::sensitivity_table(*report);
     if (Status s = print_table(table, args.report, "sensitivity.md"); !s) return fail_runtime(s.message());
+    if (int failed = validation_failure(**context)) return failed;
     return report->passed() ? kExitOk : kExitFailure;
   }
 
   auto results = regress::run_regression(**context, *scenarios, options);
   if (!results) return fail_runtime(results.message());
-  if (const auto messages = (*context)->validation_messages(); !messages.empty()) {
-    for (const std::string& message : messages) std::fprintf(stderr, "validation: %s\n", message.c_str());
-    return fail_runtime("regress: " + std::to_string(messages.size()) + " Vulkan validation messages");
-  }
+  if (int failed = validation_failure(**context)) return failed;
   if (!args.report.empty())
     if (Status s = regress::write_reports(*results, args.report); !s) return fail_runtime(s.message());
   int failing = 0;
