@@ -77,6 +77,8 @@ Character read_character(const json& value, const std::string& path) {
   c.time_offset_s = r.number("time_offset", c.time_offset_s);
   if (const json* t = r.get("transform")) c.transform = read_transform(*t, r.field("transform"));
   if (const json* p = r.get("proxies")) c.proxies = detail::read_string(*p, r.field("proxies"));
+  if (r.has("proxy_tolerance")) c.proxy_tolerance = r.number("proxy_tolerance", 0.0f);
+  if (r.has("proxy_max_spheres")) c.proxy_max_spheres = r.integer("proxy_max_spheres", 0);
   if (const json* p = r.get("path")) c.path = read_walk_path(*p, r.field("path"));
   r.finish();
   return c;
