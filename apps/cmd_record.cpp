@@ -21,6 +21,12 @@
 #include "scene/camera.h"
 #include "scene/scene_defaults.h"
 #include "scene/scene_parse.h"
+#include "scene/scene_write.h"
+#include "proxies/rig_file.h"
+
+#ifndef PROXYGI_VERSION
+#define PROXYGI_VERSION "unknown"
+#endif
 
 namespace proxygi::app {
 namespace {
@@ -34,6 +40,8 @@ struct RecordArgs {
   bool mp4 = false;
   bool no_mp4 = false;
   bool aov = false;
+  bool overwrite = false;
+  bool verify = false;
   int width = 0;   // 0: the scene's
   int height = 0;
   std::string device;
@@ -115,10 +123,8 @@ int encode_when_complete(const RecordPlan& plan, const run::FrameRange& range, d
   std::error_code error;
   if (!rendered_any && std::filesystem::exists(video_file(plan.dir), error)) return kExitOk;  // already up to date
   const auto ffmpeg = find_program("ffmpeg");
-  if (!ffmpeg) {
-    std::fprintf(stderr, "proxygi: warning: ffmpeg not found on PATH; video.mp4 not encoded\n");
-    return kExitOk;
-  }
+  if (!ffmpeg) return fail_runtime("ffmpeg not found on PATH, so video.mp4 cannot be encoded (the frames are written; install ffmpeg "
+                                   "and run again, or pass --no-mp4)");
   if (Status s = encode_video({*ffmpeg, plan.dir, range.first, range.last - range.first + 1, fps}); !s)
     return fail_runtime("video.mp4: " + s.message());
   std::fprintf(stderr, "record: wrote %s\n", video_file(plan.dir).c_str());
@@ -147,6 +153,10 @@ int run_record(const RecordArgs& args) {
   auto share = run::plan_frames(scene.output, requested, shard);
   if (!share) return fail_bad_input(share.message());
 
+  const bool want_mp4 = (args.mp4 || has_format(scene.output, scene::OutputFormat::mp4)) && !args.no_mp4;
+  if (want_mp4 && args.shard.empty() && !find_program("ffmpeg"))  // before hours of rendering
+    return fail_runtime("the scene asks for mp4 but ffmpeg is not on PATH; install ffmpeg, or pass --no-mp4");
+
   RecordPlan plan;
   plan.dir = args.output;
   plan.exr = args.exr || has_format(scene.output, scene::OutputFormat::exr);
@@ -154,8 +164,30 @@ int run_record(const RecordArgs& args) {
   std::error_code error;
   std::filesystem::create_directories(plan.dir, error);
   if (error) return fail_runtime(plan.dir.string() + ": cannot create the output folder: " + error.message());
+  // The folder must belong to this scene and size before any of its files is trusted.
+  auto scene_text = scene::to_json(scene);
+  if (!scene_text) return fail_bad_input(scene_text.message());
+  const RecordManifest manifest{proxies::content_hash(std::span(reinterpret_cast<const std::uint8_t*>(scene_text->data()),
+                                                                scene_text->size())),
+                                scene.output.width, scene.output.height, PROXYGI_VERSION};
+  auto found = read_manifest(plan.dir);
+  if (!found && !args.overwrite) return fail_bad_input(found.message() + " (use another folder or --overwrite)");
+  if (!args.overwrite) {
+    if (found && *found) {
+      if (const std::string why = manifest_mismatch(**found, manifest); !why.empty())
+        return fail_bad_input(plan.dir.string() + ": " + why + "; record into another folder, or pass --overwrite to replace its frames");
+    } else if (has_frame_files(plan.dir)) {
+      return fail_bad_input(plan.dir.string() + " holds frames but no record.json, so they may belong to another scene; record into "
+                            "another folder, or pass --overwrite to replace them");
+    }
+  }
+  if (args.overwrite || !found || !*found || found->value().version != manifest.version)
+    if (Status s = write_manifest(plan.dir, manifest); !s) return fail_runtime(s.message());
+  int stale = remove_stale_temporaries(plan.dir);
+  if (plan.aov) stale += remove_stale_temporaries(plan.dir / "aov");
+  if (stale > 0) std::fprintf(stderr, "record: removed %d temporary file%s left by an interrupted run\n", stale, stale > 1 ? "s" : "");
   for (int frame : *share) {
-    if (frame_done(plan.dir, frame, plan.exr, plan.aov)) ++plan.skipped;
+    if (!args.overwrite && frame_done(plan.dir, frame, plan.exr, plan.aov, args.verify)) ++plan.skipped;
     else plan.frames.push_back(frame);
   }
 
@@ -185,7 +217,6 @@ int run_record(const RecordArgs& args) {
   progress->finish();
   if (g_interrupted) return fail_runtime("interrupted; finished frames are kept, run the same command to resume");
 
-  const bool want_mp4 = (args.mp4 || has_format(scene.output, scene::OutputFormat::mp4)) && !args.no_mp4;
   if (!want_mp4) return kExitOk;
   if (!args.shard.empty()) {
     std::fprintf(stderr, "record: shards do not encode video; when all shards are done, run again without --shard\n");
@@ -221,6 +252,9 @@ void add_record_command(CLI::App& app, CommandRunner& runner) {
                     "indirect,upsampled}.exr and _proxies.png");
   command->add_option("--width", args->width, "Override the scene's output width")->check(CLI::Range(16, 8192));
   command->add_option("--height", args->height, "Override the scene's output height")->check(CLI::Range(16, 8192));
+  command->add_flag("--overwrite", args->overwrite,
+                    "Render every frame again, also into a folder recorded from another scene or size");
+  command->add_flag("--verify", args->verify, "Decode the frames already in the folder; render again those that do not decode");
   add_device_option(*command, args->device);
   command->callback([args, &runner] { runner = [args] { return run_record(*args); }; });
 }
