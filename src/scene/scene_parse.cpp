@@ -153,7 +153,8 @@ CameraKey read_camera_key(const json& value, const std::string& path) {
 Camera read_camera(const json& value, const std::string& path) {
   ObjectReader r(value, path);
   Camera c;
-  const std::string type = detail::read_string(r.require("type"), r.field("type"));
+  // No "type": a fixed camera (README, "Scene files").
+  const std::string type = r.has("type") ? detail::read_string(*r.get("type"), r.field("type")) : std::string("fixed");
   c.near_m = r.number("near", c.near_m);
   c.far_m = r.number("far", c.far_m);
   if (type == "fixed") {
