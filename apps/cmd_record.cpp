@@ -14,6 +14,7 @@
 #include "apps/record_output.h"
 #include "apps/record_progress.h"
 #include "apps/record_video.h"
+#include "apps/scene_input.h"
 #include "gpu/scene_renderer.h"
 #include "run/frame_loop.h"
 #include "run/frame_plan.h"
@@ -32,7 +33,7 @@ namespace proxygi::app {
 namespace {
 
 struct RecordArgs {
-  std::string scene;  // file, "default", "crowd", or empty (default)
+  SceneArgs scene;  // file, "default", "crowd", a model, or empty (default)
   std::string output;
   std::string frames;
   std::string shard;
@@ -49,15 +50,6 @@ struct RecordArgs {
 
 volatile std::sig_atomic_t g_interrupted = 0;
 extern "C" void on_interrupt(int) { g_interrupted = 1; }
-
-// A file by that name wins over the built-in names, so a scene called "default" still loads.
-Result<scene::Scene> load_record_scene(const std::string& name) {
-  std::error_code error;
-  const bool is_file = !name.empty() && std::filesystem::exists(name, error);
-  if (!is_file && (name.empty() || name == "default")) return scene::default_scene();
-  if (!is_file && name == "crowd") return scene::crowd_scene();
-  return scene::load_scene(name);
-}
 
 bool has_format(const scene::Output& output, scene::OutputFormat format) {
   return std::find(output.formats.begin(), output.formats.end(), format) != output.formats.end();
@@ -132,7 +124,7 @@ int encode_when_complete(const RecordPlan& plan, const run::FrameRange& range, d
 }
 
 int run_record(const RecordArgs& args) {
-  Result<scene::Scene> loaded = load_record_scene(args.scene);
+  Result<scene::Scene> loaded = open_scene(args.scene);
   if (!loaded) return fail_bad_input(loaded.message());
   scene::Scene scene = std::move(*loaded);
   if (args.width > 0) scene.output.width = args.width;
@@ -234,8 +226,7 @@ void add_record_command(CLI::App& app, CommandRunner& runner) {
       "record",
       "Render a scene headless to DIR/frame_%05d.png (+ .exr, + video.mp4). Resumable: frames whose files "
       "exist are skipped; files are written atomically.");
-  command->add_option("scene", args->scene,
-                      "Scene JSON file, or 'default' / 'crowd' for a built-in scene (default: 'default')");
+  add_scene_options(*command, args->scene, true);
   command->add_option("-o,--output", args->output, "Output folder (created if missing)")->required();
   command->add_option("--frames", args->frames,
                       "A:B, first and last frame (inclusive) within the scene's output range (default: all)");

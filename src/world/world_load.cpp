@@ -119,6 +119,7 @@ Result<proxies::ProxyRig> obtain_rig(const RigSource& source, const anim::Charac
   if (!obtained) return make_error(source.rig_file.string() + ": " + obtained.message());
   for (const std::string& warning : proxies::node_name_warnings(character)) log_warning(warning);
   for (const std::string& warning : obtained->warnings) log_warning("proxies: " + warning);
+  if (!obtained->write_error.empty()) log_warning("proxies: rig not cached: " + obtained->write_error);
   if (!obtained->cache_hit)
     log_info("proxies: fitted " + std::to_string(obtained->rig.spheres.size()) + " spheres to " + source.model_file.string() +
              (obtained->file.empty() ? std::string(" (kept in memory)") : " (written to " + obtained->file.string() + ")"));
