@@ -111,9 +111,9 @@ void add_fit_command(CLI::App& app, CommandRunner& runner) {
   auto* command = app.add_subcommand("fit", "Fit sphere proxies to each bone of a model");
   command->add_option("model", args->model, "glTF/GLB file, or 'mannequin' / 'builtin:mannequin' for the built-in character")->required();
   command->add_option("-o,--output", args->output, "rig file (default: MODEL.proxies.json next to the model, or in $XDG_CACHE_HOME/proxygi when that folder is not writable)");
-  command->add_option("--tolerance", args->tolerance, "allowed protrusion, relative to the bounding-box diagonal")
-      ->check(CLI::PositiveNumber);
-  command->add_option("--max-spheres", args->max_spheres, "cap on the sphere count")->check(CLI::PositiveNumber);
+  command->add_option("--tolerance", args->tolerance, "allowed protrusion, relative to the bounding-box diagonal, in [0.0001, 1]")
+      ->check(CLI::Range(0.0001f, 1.0f));
+  command->add_option("--max-spheres", args->max_spheres, "cap on the sphere count, in [1, 4096]")->check(CLI::Range(1, 4096));
   command->add_flag("--json", args->json, "print the report as JSON on stdout");
   command->add_flag("--force", args->force, "refit even when the cached rig matches");
   command->callback([&runner, args] { runner = [args] { return run_fit(*args); }; });

@@ -110,11 +110,16 @@ Result<ObtainedRig> load_or_fit_rig(const anim::Character& character, const RigR
       out.file = request.rig_file;
       return out;
     }
-    if (request.user_file || fallback.empty()) return written.error();
+    if (request.user_file || fallback.empty()) {
+      out.write_error = written.message();
+      return out;
+    }
     std::error_code error;
     std::filesystem::create_directories(fallback.parent_path(), error);
-    if (Status cached = write_rig(fallback, out.rig, character); !cached)
-      return make_error(written.message() + "; and the user cache: " + cached.message());
+    if (Status cached = write_rig(fallback, out.rig, character); !cached) {
+      out.write_error = written.message() + "; and the user cache: " + cached.message();
+      return out;
+    }
     out.file = fallback;
     out.warnings.push_back("cannot write " + request.rig_file.string() + " (" + written.message() + "); cached the rig in " +
                            fallback.string());

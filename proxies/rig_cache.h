@@ -41,6 +41,7 @@ struct ObtainedRig {
   bool cache_hit = false;
   std::filesystem::path file;           // the file it came from or was written to (empty: in memory only)
   std::vector<std::string> warnings;    // for the user: refits kept in memory, broken caches, fallbacks
+  std::string write_error;              // set when a fresh fit could be written nowhere (rig still valid)
 };
 
 // $XDG_CACHE_HOME/proxygi, else $HOME/.cache/proxygi; empty when neither variable is set.
@@ -49,8 +50,8 @@ std::filesystem::path user_cache_dir();
 std::filesystem::path user_cache_file(const std::filesystem::path& dir, const std::string& model_hash,
                                       const FitOptions& options);
 
-// Errors: an unreadable or invalid user rig, a failed fit, or a cache that could be written
-// nowhere (next to the model nor in the user cache folder).
+// Errors: an unreadable or invalid user rig, or a failed fit. A rig that could be written nowhere
+// (next to the model nor in the user cache folder) is returned with write_error set.
 Result<ObtainedRig> load_or_fit_rig(const anim::Character& character, const RigRequest& request);
 
 }  // namespace proxygi::proxies
