@@ -6,7 +6,7 @@ file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 file(WRITE ${WORK}/garbage.glb "this is not a glTF file")
 file(WRITE ${WORK}/broken.json "{\"schema_version\": 1, \"characters\": [")
-file(WRITE ${WORK}/typeless_camera.json "{\"schema_version\": 1, \"camera\": {\"position\": [0, 1, 4], \"target\": [0, 1, 0]}, \"characters\": [{\"model\": \"builtin:mannequin\"}], \"output\": {\"width\": 16, \"height\": 16, \"frame_count\": 1}}")
+file(WRITE ${WORK}/typeless_camera.json "{\"schema_version\": 1, \"camera\": {\"position\": [0, 1, 4], \"target\": [0, 1, 0]}, \"characters\": [{\"model\": \"builtin:mannequin\"}], \"output\": {\"width\": 16, \"height\": 16, \"frames\": {\"count\": 1}}}")
 set(missing ${WORK}/no-such-model.glb)
 
 # command | arguments (separated by ~; INPUT is replaced)
@@ -68,6 +68,7 @@ check("reference frame range" 2 "outside the scene's frames 0:95" reference --fr
 check("reference -o extension" 2 "written as .exr" reference --frame 0 --spp 1 -o ${WORK}/reference.png)
 check("record frames range" 2 "outside the scene's frames" record -o ${WORK}/record --frames 0:9999)
 check("info validate" 0 "^$" info mannequin --validate --quiet)
+check("camera without type is fixed" 0 "reference" reference ${WORK}/typeless_camera.json --frame 0 --spp 1 -o ${WORK}/typeless.exr)
 
 if(failures)
   message(FATAL_ERROR "exit codes:${failures}")
