@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "gpu/context.h"
+#include "gpu/transfer.h"
 
 namespace proxygi::gpu {
 namespace {
@@ -24,24 +25,6 @@ Result<VkSurfaceKHR> create_headless_surface(VkInstance instance) {
   VkSurfaceKHR surface = VK_NULL_HANDLE;
   if (create(instance, &info, nullptr, &surface) != VK_SUCCESS) return make_error("vkCreateHeadlessSurfaceEXT failed");
   return surface;
-}
-
-void image_barrier(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkImageLayout to) {
-  VkImageMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-  barrier.srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-  barrier.srcAccessMask = VK_ACCESS_2_MEMORY_WRITE_BIT;
-  barrier.dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-  barrier.dstAccessMask = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT;
-  barrier.oldLayout = from;
-  barrier.newLayout = to;
-  barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  barrier.image = image;
-  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-  VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-  dependency.imageMemoryBarrierCount = 1;
-  dependency.pImageMemoryBarriers = &barrier;
-  vkCmdPipelineBarrier2(commands, &dependency);
 }
 
 TEST(ContextOptions, HeadlessByDefault) {
@@ -183,11 +166,11 @@ TEST(ContextOptions, HeadlessSurfaceSwapchainPresentsOneImage) {
 
   const VkImage image = images[index];
   const Status cleared = context.submit_and_wait([&](VkCommandBuffer commands) {
-    image_barrier(commands, image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+    transition(commands, image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
     const VkClearColorValue color{{0.25f, 0.5f, 0.75f, 1.0f}};
     const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
     vkCmdClearColorImage(commands, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &color, 1, &range);
-    image_barrier(commands, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR);
+    transition(commands, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR);
   });
   EXPECT_TRUE(cleared.ok()) << cleared.message();
 
