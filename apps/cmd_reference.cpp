@@ -6,6 +6,8 @@
 // SCENE is a scene file, or "default" / "crowd" for a built-in scene (a file by that name wins).
 // The scene is loaded and posed by world::World (the GPU renderer's rules), without proxy rigs.
 // Bad arguments or scenes exit 2, failures while rendering or writing exit 1.
+#include <unistd.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -141,14 +143,22 @@ int run_reference(const ReferenceArgs& args) {
   job.seed = args.seed;
   job.threads = args.threads;
   ref::RenderStats stats;
-  auto progress = [](const ref::RenderProgress& p) {
-    std::fprintf(stderr, "\r  %5.1f%%  %s elapsed  ETA %s  %.2f Mrays/s   ", 100.0 * p.tiles_done / std::max(p.tiles_total, 1),
+  // On a terminal one line rewritten with \r; into a file or pipe a line per tenth of the work.
+  const bool terminal = isatty(fileno(stderr)) != 0;
+  int last_tenth = -1;
+  auto progress = [terminal, &last_tenth](const ref::RenderProgress& p) {
+    const double percent = 100.0 * p.tiles_done / std::max(p.tiles_total, 1);
+    if (!terminal) {
+      if (int(percent / 10.0) == last_tenth) return;
+      last_tenth = int(percent / 10.0);
+    }
+    std::fprintf(stderr, "%s  %5.1f%%  %s elapsed  ETA %s  %.2f Mrays/s%s", terminal ? "\r" : "", percent,
                  format_duration(p.elapsed_s).c_str(), format_duration(p.eta_s).c_str(),
-                 p.elapsed_s > 0.0 ? double(p.rays) / p.elapsed_s * 1e-6 : 0.0);
+                 p.elapsed_s > 0.0 ? double(p.rays) / p.elapsed_s * 1e-6 : 0.0, terminal ? "   " : "\n");
     std::fflush(stderr);
   };
   auto sums = ref::render_samples(tracer, camera, job, &stats, progress);
-  std::fprintf(stderr, "\n");
+  if (terminal) std::fprintf(stderr, "\n");
   if (!sums) return fail_bad_input(sums.message());
   if (previous) {
     if (Status s = previous->merge(*sums); !s) return fail_bad_input("--accumulate: " + s.message());
