@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "apps/commands.h"
+#include "base/log.h"
 #include "apps/record_output.h"
 #include "apps/record_progress.h"
 #include "apps/record_video.h"
@@ -42,6 +43,7 @@ struct RecordArgs {
   bool no_mp4 = false;
   bool aov = false;
   bool overwrite = false;
+  bool quiet = false;
   bool verify = false;
   int width = 0;   // 0: the scene's
   int height = 0;
@@ -183,11 +185,19 @@ int run_record(const RecordArgs& args) {
     else plan.frames.push_back(frame);
   }
 
+  // --quiet: no progress, no summary, no info lines; warnings and errors still print.
+  std::FILE* progress_stream = stderr;
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> null_stream(nullptr, &std::fclose);
+  if (args.quiet) {
+    set_log_level(LogLevel::quiet);
+    null_stream.reset(std::fopen("/dev/null", "w"));
+    if (null_stream) progress_stream = null_stream.get();
+  }
   std::signal(SIGINT, on_interrupt);
   std::signal(SIGTERM, on_interrupt);
   std::optional<RecordProgress> progress;
   if (plan.frames.empty()) {
-    progress.emplace(0, plan.skipped);  // resume of a finished run: no device needed
+    progress.emplace(0, plan.skipped, progress_stream);  // resume of a finished run: no device needed
   } else {
     for (const scene::Character& character : scene.characters)
       if (scene::is_builtin_mannequin(character.model) && !std::filesystem::exists(assets_dir() / "mannequin.glb", error))
@@ -198,7 +208,7 @@ int run_record(const RecordArgs& args) {
     if (!context) return fail_runtime(context.message());
     auto renderer = gpu::SceneRenderer::create(**context, scene, {assets_dir(), true});
     if (!renderer) return fail_runtime(renderer.message());
-    progress.emplace(int(plan.frames.size()), plan.skipped);
+    progress.emplace(int(plan.frames.size()), plan.skipped, progress_stream);
     const Status rendered = plan.aov ? render_with_aovs(**renderer, plan, *progress)
                                      : render_in_flight(**renderer, plan, *progress);
     if (!rendered) {
@@ -245,6 +255,7 @@ void add_record_command(CLI::App& app, CommandRunner& runner) {
   command->add_option("--height", args->height, "Override the scene's output height")->check(CLI::Range(16, 8192));
   command->add_flag("--overwrite", args->overwrite,
                     "Render every frame again, also into a folder recorded from another scene or size");
+  command->add_flag("-q,--quiet", args->quiet, "Print only warnings and errors (for scripts)");
   command->add_flag("--verify", args->verify, "Decode the frames already in the folder; render again those that do not decode");
   add_device_option(*command, args->device);
   command->callback([args, &runner] { runner = [args] { return run_record(*args); }; });
