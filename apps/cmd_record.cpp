@@ -44,6 +44,7 @@ struct RecordArgs {
   bool aov = false;
   bool overwrite = false;
   bool quiet = false;
+  bool refit = false;
   bool verify = false;
   int width = 0;   // 0: the scene's
   int height = 0;
@@ -206,7 +207,7 @@ int run_record(const RecordArgs& args) {
                             "$PROXYGI_ASSETS at a folder holding it");
     auto context = gpu::Context::create({.device_request = args.device});
     if (!context) return fail_runtime(context.message());
-    auto renderer = gpu::SceneRenderer::create(**context, scene, {assets_dir(), true});
+    auto renderer = gpu::SceneRenderer::create(**context, scene, {.assets_dir = assets_dir(), .write_rig_cache = true, .refit = args.refit});
     if (!renderer) return fail_runtime(renderer.message());
     progress.emplace(int(plan.frames.size()), plan.skipped, progress_stream);
     const Status rendered = plan.aov ? render_with_aovs(**renderer, plan, *progress)
@@ -255,6 +256,8 @@ void add_record_command(CLI::App& app, CommandRunner& runner) {
   command->add_option("--height", args->height, "Override the scene's output height")->check(CLI::Range(16, 8192));
   command->add_flag("--overwrite", args->overwrite,
                     "Render every frame again, also into a folder recorded from another scene or size");
+  command->add_flag("--refit", args->refit,
+                    "Fit every proxy rig again and write it, also a rig file the scene names (else used as it is)");
   command->add_flag("-q,--quiet", args->quiet, "Print only warnings and errors (for scripts)");
   command->add_flag("--verify", args->verify, "Decode the frames already in the folder; render again those that do not decode");
   add_device_option(*command, args->device);
