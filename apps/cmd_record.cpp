@@ -17,6 +17,7 @@
 #include "apps/record_video.h"
 #include "apps/scene_input.h"
 #include "gpu/scene_renderer.h"
+#include "world/world.h"
 #include "run/frame_loop.h"
 #include "run/frame_plan.h"
 #include "run/task_queue.h"
@@ -205,9 +206,14 @@ int run_record(const RecordArgs& args) {
         return fail_runtime((assets_dir() / "mannequin.glb").string() +
                             " is missing: create it with `proxygi mannequin -o <assets>/mannequin.glb` or point "
                             "$PROXYGI_ASSETS at a folder holding it");
+    // The world first: a missing or malformed model, clip or rig is bad input (exit 2), named by
+    // the scene and field, before any device is opened.
+    auto world = world::World::load(scene, {.assets_dir = assets_dir(), .write_rig_cache = true, .refit = args.refit});
+    if (!world) return fail_bad_input((args.scene.scene.empty() ? std::string("default") : args.scene.scene) + ": " + world.message());
     auto context = gpu::Context::create({.device_request = args.device});
     if (!context) return fail_runtime(context.message());
-    auto renderer = gpu::SceneRenderer::create(**context, scene, {.assets_dir = assets_dir(), .write_rig_cache = true, .refit = args.refit});
+    auto renderer = gpu::SceneRenderer::create(**context, std::shared_ptr<const world::World>(std::move(*world)), scene.render,
+                                               std::uint32_t(scene.output.width), std::uint32_t(scene.output.height));
     if (!renderer) return fail_runtime(renderer.message());
     progress.emplace(int(plan.frames.size()), plan.skipped, progress_stream);
     const Status rendered = plan.aov ? render_with_aovs(**renderer, plan, *progress)

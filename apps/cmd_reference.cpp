@@ -117,7 +117,7 @@ int run_reference(const ReferenceArgs& args) {
   }
 
   auto world = world::World::load(scene, {.assets_dir = assets_dir(), .load_rigs = false});
-  if (!world) return fail_bad_input(world.message());
+  if (!world) return fail_bad_input(record.scene + ": " + world.message());
   world::WorldState state;
   if (Status evaluated = (*world)->evaluate(record.time_s, std::nullopt, state); !evaluated)
     return fail_bad_input(evaluated.message());

@@ -19,7 +19,9 @@
 #include "proxies/rig_cache.h"
 #include "proxies/rig_file.h"
 #include "scene/scene_defaults.h"
+#include "world/model_stage.h"
 #include "world/world.h"
+#include "scene/camera.h"
 
 namespace proxygi::world {
 namespace {
@@ -213,6 +215,44 @@ TEST(WorldRig, AReadOnlyModelFolderCachesTheRigInTheUserCache) {
   int cached = 0;
   for (const auto& entry : std::filesystem::directory_iterator(cache / "proxygi")) cached += entry.path().string().ends_with(".proxies.json");
   EXPECT_EQ(cached, 1);
+}
+
+// `record MODEL.glb`: the model stands on the ground at its own size, and the camera sees its
+// whole motion over the clip; the ground reaches the horizon.
+TEST(ModelStage, PlacesTheModelOnTheGroundAndFramesItsClip) {
+  const std::filesystem::path folder = fresh_folder("world-stage");
+  anim::Character big = anim::build_mannequin();
+  for (anim::Node& node : big.nodes)
+    if (node.parent < 0) node.rest.scale *= 3.0f;  // a 5.4 m figure: framing follows its size
+  ASSERT_TRUE(anim::write_glb(big, folder / "giant.glb").ok());
+  for (const std::string& model : {std::string("builtin:mannequin"), (folder / "giant.glb").string()}) {
+    auto scene = stage_scene(model, PROXYGI_SOURCE_DIR "/assets", {.clip = std::string("walk")});
+    ASSERT_TRUE(scene.ok()) << scene.message();
+    EXPECT_EQ(scene->characters[0].transform.scale, glm::vec3(1.0f)) << "own size";
+    EXPECT_GE(scene->ground.size, 1000.0f);
+    EXPECT_GT(scene->output.frame_count, 1);
+    auto world = World::load(*scene, options(false));
+    ASSERT_TRUE(world.ok()) << world.message();
+    auto bounds = bounds_over_time(**world, 0.0, scene::frame_time_s(scene->output, scene->output.frame_count - 1), 12);
+    ASSERT_TRUE(bounds.ok()) << bounds.message();
+    EXPECT_NEAR(bounds->first.y, 0.0f, 1e-3f) << model << ": the lowest point over the clip is on the ground";
+    const float height = bounds->second.y - bounds->first.y;
+    EXPECT_GT(height, model.ends_with("giant.glb") ? 5.0f : 1.6f) << model;
+    // Every corner of the motion's bounds projects inside the picture.
+    WorldState state;
+    ASSERT_TRUE((*world)->evaluate(0.0, std::nullopt, state).ok());
+    const scene::CameraState& camera = state.camera;
+    const float aspect = float(scene->output.width) / float(scene->output.height);
+    const glm::mat4 view_projection = scene::projection_matrix(camera, aspect) * scene::view_matrix(camera);
+    for (int corner = 0; corner < 8; ++corner) {
+      const glm::vec3 p(corner & 1 ? bounds->second.x : bounds->first.x, corner & 2 ? bounds->second.y : bounds->first.y,
+                        corner & 4 ? bounds->second.z : bounds->first.z);
+      const glm::vec4 clip = view_projection * glm::vec4(p, 1.0f);
+      ASSERT_GT(clip.w, 0.0f);
+      EXPECT_LE(std::abs(clip.x / clip.w), 1.0f) << model << " corner " << corner;
+      EXPECT_LE(std::abs(clip.y / clip.w), 1.0f) << model << " corner " << corner;
+    }
+  }
 }
 
 }  // namespace
