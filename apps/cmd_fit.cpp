@@ -69,6 +69,8 @@ void print_text(const proxies::ProxyRig& rig, const std::string& rig_path, bool 
 }
 
 int run_fit(const FitArgs& args) {
+  if (!args.output.empty() && !args.output.ends_with(".json"))
+    return fail_bad_input("-o '" + args.output + "': a rig is written as JSON; name it *.proxies.json");
   Result<ModelInput> model = open_model(args.model);
   if (!model) return fail_bad_input(model.message());
   const anim::Character& character = model->character;
