@@ -6,6 +6,7 @@
 #include "anim/import_context.h"
 #include "anim/import_sandbox.h"
 #include "anim/import_stb.h"
+#include "base/log.h"
 
 namespace proxygi::anim::detail {
 namespace {
@@ -174,7 +175,14 @@ Status import_materials(ImportContext& ctx, Character& character) {
     const std::uint64_t pixels_left = ctx.limits.max_total_image_pixels - ctx.image_pixels_decoded;
     auto decoded = decode_image(*bytes, ctx.limits.max_image_dimension,
                                 std::min(ctx.limits.max_image_pixels, pixels_left));
-    if (!decoded) return error_at(what, decoded.message());
+    if (!decoded && decoded.message().find("limit") != std::string::npos) return error_at(what, decoded.message());
+    if (!decoded) {
+      // A texture that does not decode (truncated, not PNG/JPEG): as glTF viewers do: the material keeps its base color factor, without the texture.
+      log_warning(character.source + ": " + what + ": " + decoded.message() + "; using the base color factor instead");
+      for (Material& material : character.materials)
+        if (material.base_color_image == index) material.base_color_image = -1;
+      continue;
+    }
     ctx.image_pixels_decoded += static_cast<std::uint64_t>(decoded->width) * static_cast<std::uint64_t>(decoded->height);
     Image& image = character.images[i];
     image.width = decoded->width;

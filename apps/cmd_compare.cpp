@@ -62,6 +62,11 @@ int run_compare(const CompareArgs& args) {
   const bool has_ssim = ssim.ok();
   const double ssim_mean = has_ssim ? ssim->mean : 0.0;
 
+  if (is_high_dynamic_range_file(args.test) != is_high_dynamic_range_file(args.reference))
+    std::fprintf(stderr,
+                 "proxygi: warning: comparing a PNG (tonemapped, sRGB) with linear radiance (%s); the scores mix two "
+                 "encodings: compare the record's .exr (--exr) with the reference's .exr instead\n",
+                 is_high_dynamic_range_file(args.test) ? args.test.c_str() : args.reference.c_str());
   const bool hdr = args.flip_mode == "hdr" ||
                    (args.flip_mode == "auto" && (is_high_dynamic_range_file(args.test) || is_high_dynamic_range_file(args.reference)));
   ref::MetricResult flip;

@@ -2,6 +2,7 @@
 // Fits sphere proxies per bone (or reuses MODEL.proxies.json while the model's content hash,
 // tolerance and sphere cap match), measures their quality, picks the better binding over every
 // frame of every clip, and writes the rig atomically.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
@@ -10,6 +11,7 @@
 #include "anim/gltf_import.h"
 #include "anim/mannequin.h"
 #include "apps/commands.h"
+#include "apps/model_input.h"
 #include "proxies/fit.h"
 #include "proxies/rig_cache.h"
 #include "proxies/rig_file.h"
@@ -67,42 +69,40 @@ void print_text(const proxies::ProxyRig& rig, const std::string& rig_path, bool 
 }
 
 int run_fit(const FitArgs& args) {
-  // The built-in mannequin by name, else a glTF file.
-  const bool builtin = args.model == "mannequin" && !std::filesystem::exists(args.model);
-  anim::Character character;
-  std::string hash;
-  if (builtin) {
-    character = anim::build_mannequin();
-    hash = "builtin:mannequin";
-  } else {
-    Result<anim::Character> imported = anim::import_gltf(args.model);
-    if (!imported) return fail_bad_input(imported.message());
-    character = std::move(imported.value());
-    Result<std::string> h = proxies::hash_file(args.model);
-    if (!h) return fail_bad_input(h.message());
-    hash = *h;
-  }
-  const std::filesystem::path rig_path = !args.output.empty() ? std::filesystem::path(args.output)
-                                         : builtin ? std::filesystem::path("mannequin.proxies.json")
-                                                   : proxies::default_rig_path(args.model);
+  if (!args.output.empty() && !args.output.ends_with(".json"))
+    return fail_bad_input("-o '" + args.output + "': a rig is written as JSON; name it *.proxies.json");
+  Result<ModelInput> model = open_model(args.model);
+  if (!model) return fail_bad_input(model.message());
+  const anim::Character& character = model->character;
+  for (const std::string& warning : proxies::node_name_warnings(character)) std::fprintf(stderr, "warning: %s\n", warning.c_str());
+  const int bones = [&] {
+    std::vector<char> bone(character.nodes.size(), 0);
+    for (const anim::Skin& skin : character.skins)
+      for (int joint : skin.joints) bone[std::size_t(joint)] = 1;
+    return int(std::count(bone.begin(), bone.end(), 1));
+  }();
 
   proxies::RigRequest request;
-  request.rig_file = rig_path;
-  request.model_name = builtin ? "mannequin" : std::filesystem::path(args.model).filename().string();
-  request.model_hash = hash;
+  request.rig_file = args.output.empty() ? model->rig_file : std::filesystem::path(args.output);
+  request.fallback = args.output.empty();  // -o FILE: that file or nothing
+  request.model_name = model->mannequin ? "mannequin.glb" : model->file.filename().string();
+  request.model_hash = model->hash;
   request.options.tolerance = args.tolerance;
   request.options.max_spheres = args.max_spheres;
   request.force = args.force;
   Result<proxies::ObtainedRig> obtained = proxies::load_or_fit_rig(character, request);
   if (!obtained) return fail_bad_input(obtained.message() + " (fix the file or pass --force to refit)");
+  for (const std::string& warning : obtained->warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
+  if (!obtained->write_error.empty()) return fail_runtime(obtained->write_error);
   const proxies::ProxyRig& rig = obtained->rig;
-  if (obtained->cache_hit) {
-    if (args.json) std::printf("%s\n", report_json(rig, args.model, rig_path.string(), true).dump(2).c_str());
-    else print_text(rig, rig_path.string(), true);
-    return kExitOk;
-  }
-  if (args.json) std::printf("%s\n", report_json(rig, args.model, rig_path.string(), false).dump(2).c_str());
-  else print_text(rig, rig_path.string(), false);
+  const std::string where = obtained->file.empty() ? "(not written)" : obtained->file.string();
+  if (args.max_spheres < bones && !obtained->cache_hit)
+    std::fprintf(stderr,
+                 "fit: --max-spheres %d is below one sphere per bone (%d bones with skin weight); fitted %zu spheres, one "
+                 "per bone that owns vertices, and skipped the rest of the cap\n",
+                 args.max_spheres, bones, rig.spheres.size());
+  if (args.json) std::printf("%s\n", report_json(rig, args.model, where, obtained->cache_hit).dump(2).c_str());
+  else print_text(rig, where, obtained->cache_hit);
   return kExitOk;
 }
 
@@ -111,11 +111,11 @@ int run_fit(const FitArgs& args) {
 void add_fit_command(CLI::App& app, CommandRunner& runner) {
   auto args = std::make_shared<FitArgs>();
   auto* command = app.add_subcommand("fit", "Fit sphere proxies to each bone of a model");
-  command->add_option("model", args->model, "glTF/GLB file, or 'mannequin' for the built-in character")->required();
-  command->add_option("-o,--output", args->output, "rig file (default: MODEL.proxies.json next to the model)");
-  command->add_option("--tolerance", args->tolerance, "allowed protrusion, relative to the bounding-box diagonal")
-      ->check(CLI::PositiveNumber);
-  command->add_option("--max-spheres", args->max_spheres, "cap on the sphere count")->check(CLI::PositiveNumber);
+  command->add_option("model", args->model, "glTF/GLB file, or 'mannequin' / 'builtin:mannequin' for the built-in character")->required();
+  command->add_option("-o,--output", args->output, "rig file (default: MODEL.proxies.json next to the model, or in $XDG_CACHE_HOME/proxygi when that folder is not writable)");
+  command->add_option("--tolerance", args->tolerance, "allowed protrusion, relative to the bounding-box diagonal, in [0.0001, 1]")
+      ->check(CLI::Range(0.0001f, 1.0f));
+  command->add_option("--max-spheres", args->max_spheres, "cap on the sphere count, in [1, 4096]")->check(CLI::Range(1, 4096));
   command->add_flag("--json", args->json, "print the report as JSON on stdout");
   command->add_flag("--force", args->force, "refit even when the cached rig matches");
   command->callback([&runner, args] { runner = [args] { return run_fit(*args); }; });

@@ -8,9 +8,14 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <limits>
+#include <memory>
 #include <optional>
+#include <vector>
 
 #include "anim/gltf_import.h"
+#include "anim/posed_character.h"
+#include "apps/model_input.h"
 #include "apps/commands.h"
 #include "proxies/proxy_rig.h"
 #include "proxies/rig_file.h"
@@ -127,41 +132,111 @@ void print_table(const nlohmann::json& info) {
   }
 }
 
+// Rest-pose bounds (world space of the model, meters) of every primitive, or nullopt without geometry.
+std::optional<std::pair<glm::vec3, glm::vec3>> rest_bounds(const anim::Character& character) {
+  anim::PoseBuffers pose;
+  if (!anim::evaluate_pose(character, -1, 0.0f, anim::WrapMode::clamp, pose)) return std::nullopt;
+  auto primitives = anim::pose_meshes(character, pose);
+  if (!primitives) return std::nullopt;
+  glm::vec3 low(std::numeric_limits<float>::max()), high(-std::numeric_limits<float>::max());
+  for (const auto& primitive : *primitives)
+    for (const glm::vec3& p : primitive.positions) low = glm::min(low, p), high = glm::max(high, p);
+  if (!(low.x <= high.x)) return std::nullopt;
+  return std::make_pair(low, high);
+}
+
+struct InfoArgs {
+  std::string model;
+  bool json = false;
+  bool validate = false;
+  bool quiet = false;
+};
+
+int run_info(const InfoArgs& args) {
+  auto model = open_model(args.model);
+  if (!model) return fail_bad_input(model.message());
+  const anim::Character& character = model->character;
+  nlohmann::json info = to_json(character);
+  std::vector<std::string> warnings = proxies::node_name_warnings(character);
+  // Where the model stands: rest-pose bounds, height, and which way is up.
+  if (auto bounds = rest_bounds(character)) {
+    const glm::vec3 extent = bounds->second - bounds->first;
+    info["bounds_m"] = {{"min", {bounds->first.x, bounds->first.y, bounds->first.z}},
+                        {"max", {bounds->second.x, bounds->second.y, bounds->second.z}}};
+    info["height_m"] = extent.y;
+    info["up_axis"] = "+Y";
+    if (extent.z > 1.5f * extent.y && extent.z >= extent.x)
+      warnings.push_back(character.source + ": the model is " + std::to_string(extent.z) + " m along Z but " + std::to_string(extent.y) +
+                         " m tall (glTF is +Y up): it may have been exported Z-up and will lie on the ground");
+    if (extent.y > 50.0f || extent.y < 0.05f)
+      warnings.push_back(character.source + ": the model is " + std::to_string(extent.y) +
+                         " m tall (glTF is in meters): check the exporter's unit scale");
+  } else {
+    warnings.push_back(character.source + ": no geometry in the rest pose");
+  }
+  nlohmann::json node_names = nlohmann::json::array(), joint_names = nlohmann::json::array();
+  for (const anim::Node& node : character.nodes) node_names.push_back(node.name);
+  std::set<int> joints;
+  for (const anim::Skin& skin : character.skins) joints.insert(skin.joints.begin(), skin.joints.end());
+  for (int joint : joints) joint_names.push_back(character.nodes[std::size_t(joint)].name);
+  info["node_names"] = node_names;
+  info["joint_names"] = joint_names;
+
+  // Proxy statistics when a rig is cached next to the model (proxies/rig_file.h); a broken cache
+  // is reported (it would be refitted when rendering), not fatal.
+  std::optional<proxies::ProxyRig> rig;
+  std::error_code missing;
+  if (std::filesystem::exists(model->rig_file, missing)) {
+    auto read = proxies::read_rig(model->rig_file, character);
+    if (!read) {
+      warnings.push_back("cached rig " + read.message() + " (it is refitted when rendering; `proxygi fit --force` replaces it)");
+    } else {
+      rig = std::move(*read);
+      const proxies::RigSummary summary = proxies::summarize_rig(*rig);
+      info["proxies"] = {{"rig", model->rig_file.string()},  {"spheres", summary.sphere_count},
+                         {"bones", summary.bone_count},        {"min_radius_m", summary.min_radius},
+                         {"max_radius_m", summary.max_radius}, {"total_volume_m3", summary.total_volume},
+                         {"binding", proxies::binding_name(rig->binding)}};
+      if (!rig->model_hash.empty() && rig->model_hash != model->hash)
+        warnings.push_back(model->rig_file.string() + " was fitted to other model bytes; it is refitted when rendering");
+    }
+  }
+  info["warnings"] = warnings;
+  if (args.json) {
+    std::printf("%s\n", info.dump(2).c_str());
+  } else if (!args.quiet) {
+    print_table(info);
+    if (info.contains("bounds_m")) {
+      const auto& lo = info["bounds_m"]["min"];
+      const auto& hi = info["bounds_m"]["max"];
+      std::printf("\n  rest-pose bounds [%.3g, %.3g, %.3g] .. [%.3g, %.3g, %.3g] m, height %.3g m, up %s\n",
+                  lo[0].get<double>(), lo[1].get<double>(), lo[2].get<double>(), hi[0].get<double>(), hi[1].get<double>(),
+                  hi[2].get<double>(), info["height_m"].get<double>(), info["up_axis"].get<std::string>().c_str());
+    }
+    std::string names;
+    for (const auto& name : joint_names) names += " " + quoted_name(name.get<std::string>());
+    if (!joint_names.empty()) std::printf("  joints:%s\n", names.c_str());
+    if (rig) std::printf("\n%s\n", proxies::format_rig_summary(*rig).c_str());
+  }
+  for (const std::string& warning : warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
+  // --validate: every problem found is listed above; any makes the exit code 2 (glTF-Validator style).
+  if (args.validate && !warnings.empty()) {
+    std::fprintf(stderr, "proxygi: %s: %zu problem%s found\n", args.model.c_str(), warnings.size(), warnings.size() > 1 ? "s" : "");
+    return kExitBadInput;
+  }
+  return kExitOk;
+}
+
 }  // namespace
 
 void add_info_command(CLI::App& app, CommandRunner& runner) {
-  auto* command = app.add_subcommand("info", "Describe a glTF model: nodes, joints, skins, meshes, materials, clips");
-  static std::string model;
-  static bool json = false;
-  command->add_option("model", model, "glTF (.gltf) or binary glTF (.glb) file")->required();
-  command->add_flag("--json", json, "Print one JSON object instead of tables");
-  command->callback([&runner] {
-    runner = [] {
-      auto character = anim::import_gltf(model);
-      if (!character) return fail_bad_input(character.message());
-      nlohmann::json info = to_json(*character);
-      // Proxy statistics when a rig is cached next to the model (proxies/rig_file.h).
-      const std::filesystem::path rig_path = proxies::default_rig_path(model);
-      std::optional<proxies::ProxyRig> rig;
-      if (std::filesystem::exists(rig_path)) {
-        auto read = proxies::read_rig(rig_path, *character);
-        if (!read) return fail_bad_input(read.message());
-        rig = std::move(*read);
-        const proxies::RigSummary summary = proxies::summarize_rig(*rig);
-        info["proxies"] = {{"rig", rig_path.string()},          {"spheres", summary.sphere_count},
-                           {"bones", summary.bone_count},         {"min_radius_m", summary.min_radius},
-                           {"max_radius_m", summary.max_radius},  {"total_volume_m3", summary.total_volume},
-                           {"binding", proxies::binding_name(rig->binding)}};
-      }
-      if (json) {
-        std::printf("%s\n", info.dump(2).c_str());
-      } else {
-        print_table(info);
-        if (rig) std::printf("\n%s\n", proxies::format_rig_summary(*rig).c_str());
-      }
-      return kExitOk;
-    };
-  });
+  auto* command = app.add_subcommand("info", "Describe a glTF model: nodes, joints, skins, meshes, materials, clips, bounds");
+  auto args = std::make_shared<InfoArgs>();
+  command->add_option("model", args->model, "glTF (.gltf) or binary glTF (.glb) file, or 'mannequin'")->required();
+  command->add_flag("--json", args->json, "Print one JSON object instead of tables");
+  command->add_flag("--validate", args->validate, "List every problem found and exit 2 when there is any");
+  command->add_flag("-q,--quiet", args->quiet, "Print only warnings and errors");
+  command->callback([&runner, args] { runner = [args] { return run_info(*args); }; });
 }
 
 }  // namespace proxygi::app

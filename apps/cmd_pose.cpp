@@ -13,6 +13,7 @@
 #include "anim/gltf_import.h"
 #include "anim/posed_character.h"
 #include "apps/commands.h"
+#include "apps/model_input.h"
 #include "proxies/rig_cache.h"
 #include "proxies/rig_file.h"
 #include "proxies/sphere_mesh.h"
@@ -122,8 +123,9 @@ int run_pose(const PoseOptions& options) {
     return fail_bad_input("pose: output '" + options.output + "' must end in .obj or .ply");
   }
   if (!std::isfinite(options.time)) return fail_bad_input("pose: --time must be a finite number of seconds");
-  Result<anim::Character> character = anim::import_gltf(options.model);
-  if (!character) return fail_bad_input(character.message());
+  Result<ModelInput> model = open_model(options.model);
+  if (!model) return fail_bad_input(model.message());
+  const anim::Character* character = &model->character;
 
   int clip = -1;  // rest pose
   if (!options.clip.empty()) {
@@ -142,14 +144,14 @@ int run_pose(const PoseOptions& options) {
   if (!meshes) return fail_bad_input("pose: " + meshes.message());
   if (options.proxies) {
     // The spheres as one extra mesh "proxies": the cached rig (fitted and cached when missing).
-    auto hash = proxies::hash_file(options.model);
-    if (!hash) return fail_bad_input("pose: " + hash.message());
     proxies::RigRequest request;
-    request.rig_file = proxies::default_rig_path(options.model);
-    request.model_name = std::filesystem::path(options.model).filename().string();
-    request.model_hash = *hash;
+    request.rig_file = model->rig_file;
+    request.model_name = model->file.filename().string();
+    request.model_hash = model->hash;
     auto rig = proxies::load_or_fit_rig(*character, request);
     if (!rig) return fail_bad_input("pose: " + rig.message());
+    for (const std::string& warning : rig->warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
+    if (!rig->write_error.empty()) std::fprintf(stderr, "warning: rig not cached: %s\n", rig->write_error.c_str());
     auto tracking = proxies::compile_tracking(rig->rig, *character, rig->rig.binding);
     if (!tracking) return fail_bad_input("pose: " + tracking.message());
     std::vector<proxies::WorldSphere> spheres(tracking->spheres.size());
@@ -196,7 +198,7 @@ int run_pose(const PoseOptions& options) {
 void add_pose_command(CLI::App& app, CommandRunner& runner) {
   auto* command = app.add_subcommand("pose", "Write every mesh of a model, skinned at one time, as OBJ or PLY");
   auto options = std::make_shared<PoseOptions>();
-  command->add_option("model", options->model, "glTF model (.gltf or .glb)")->required();
+  command->add_option("model", options->model, "glTF model (.gltf or .glb), or 'mannequin'")->required();
   command->add_option("--clip", options->clip, "Clip name or index (default: rest pose, or clip 0 with --time)");
   command->add_option("--time", options->time, "Clip time in seconds (before 0 / after the end: clamped)")
       ->each([options](const std::string&) { options->time_given = true; });

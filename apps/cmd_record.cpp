@@ -11,22 +11,31 @@
 #include <optional>
 
 #include "apps/commands.h"
+#include "base/log.h"
 #include "apps/record_output.h"
 #include "apps/record_progress.h"
 #include "apps/record_video.h"
+#include "apps/scene_input.h"
 #include "gpu/scene_renderer.h"
+#include "world/world.h"
 #include "run/frame_loop.h"
 #include "run/frame_plan.h"
 #include "run/task_queue.h"
 #include "scene/camera.h"
 #include "scene/scene_defaults.h"
 #include "scene/scene_parse.h"
+#include "scene/scene_write.h"
+#include "proxies/rig_file.h"
+
+#ifndef PROXYGI_VERSION
+#define PROXYGI_VERSION "unknown"
+#endif
 
 namespace proxygi::app {
 namespace {
 
 struct RecordArgs {
-  std::string scene;  // file, "default", "crowd", or empty (default)
+  SceneArgs scene;  // file, "default", "crowd", a model, or empty (default)
   std::string output;
   std::string frames;
   std::string shard;
@@ -34,6 +43,10 @@ struct RecordArgs {
   bool mp4 = false;
   bool no_mp4 = false;
   bool aov = false;
+  bool overwrite = false;
+  bool quiet = false;
+  bool refit = false;
+  bool verify = false;
   int width = 0;   // 0: the scene's
   int height = 0;
   std::string device;
@@ -41,15 +54,6 @@ struct RecordArgs {
 
 volatile std::sig_atomic_t g_interrupted = 0;
 extern "C" void on_interrupt(int) { g_interrupted = 1; }
-
-// A file by that name wins over the built-in names, so a scene called "default" still loads.
-Result<scene::Scene> load_record_scene(const std::string& name) {
-  std::error_code error;
-  const bool is_file = !name.empty() && std::filesystem::exists(name, error);
-  if (!is_file && (name.empty() || name == "default")) return scene::default_scene();
-  if (!is_file && name == "crowd") return scene::crowd_scene();
-  return scene::load_scene(name);
-}
 
 bool has_format(const scene::Output& output, scene::OutputFormat format) {
   return std::find(output.formats.begin(), output.formats.end(), format) != output.formats.end();
@@ -115,10 +119,8 @@ int encode_when_complete(const RecordPlan& plan, const run::FrameRange& range, d
   std::error_code error;
   if (!rendered_any && std::filesystem::exists(video_file(plan.dir), error)) return kExitOk;  // already up to date
   const auto ffmpeg = find_program("ffmpeg");
-  if (!ffmpeg) {
-    std::fprintf(stderr, "proxygi: warning: ffmpeg not found on PATH; video.mp4 not encoded\n");
-    return kExitOk;
-  }
+  if (!ffmpeg) return fail_runtime("ffmpeg not found on PATH, so video.mp4 cannot be encoded (the frames are written; install ffmpeg "
+                                   "and run again, or pass --no-mp4)");
   if (Status s = encode_video({*ffmpeg, plan.dir, range.first, range.last - range.first + 1, fps}); !s)
     return fail_runtime("video.mp4: " + s.message());
   std::fprintf(stderr, "record: wrote %s\n", video_file(plan.dir).c_str());
@@ -126,7 +128,7 @@ int encode_when_complete(const RecordPlan& plan, const run::FrameRange& range, d
 }
 
 int run_record(const RecordArgs& args) {
-  Result<scene::Scene> loaded = load_record_scene(args.scene);
+  Result<scene::Scene> loaded = open_scene(args.scene);
   if (!loaded) return fail_bad_input(loaded.message());
   scene::Scene scene = std::move(*loaded);
   if (args.width > 0) scene.output.width = args.width;
@@ -147,6 +149,10 @@ int run_record(const RecordArgs& args) {
   auto share = run::plan_frames(scene.output, requested, shard);
   if (!share) return fail_bad_input(share.message());
 
+  const bool want_mp4 = (args.mp4 || has_format(scene.output, scene::OutputFormat::mp4)) && !args.no_mp4;
+  if (want_mp4 && args.shard.empty() && !find_program("ffmpeg"))  // before hours of rendering
+    return fail_runtime("the scene asks for mp4 but ffmpeg is not on PATH; install ffmpeg, or pass --no-mp4");
+
   RecordPlan plan;
   plan.dir = args.output;
   plan.exr = args.exr || has_format(scene.output, scene::OutputFormat::exr);
@@ -154,27 +160,62 @@ int run_record(const RecordArgs& args) {
   std::error_code error;
   std::filesystem::create_directories(plan.dir, error);
   if (error) return fail_runtime(plan.dir.string() + ": cannot create the output folder: " + error.message());
+  // The folder must belong to this scene and size before any of its files is trusted.
+  auto scene_text = scene::to_json(scene);
+  if (!scene_text) return fail_bad_input(scene_text.message());
+  const RecordManifest manifest{proxies::content_hash(std::span(reinterpret_cast<const std::uint8_t*>(scene_text->data()),
+                                                                scene_text->size())),
+                                scene.output.width, scene.output.height, PROXYGI_VERSION};
+  auto found = read_manifest(plan.dir);
+  if (!found && !args.overwrite) return fail_bad_input(found.message() + " (use another folder or --overwrite)");
+  if (!args.overwrite) {
+    if (found && *found) {
+      if (const std::string why = manifest_mismatch(**found, manifest); !why.empty())
+        return fail_bad_input(plan.dir.string() + ": " + why + "; record into another folder, or pass --overwrite to replace its frames");
+    } else if (has_frame_files(plan.dir)) {
+      return fail_bad_input(plan.dir.string() + " holds frames but no record.json, so they may belong to another scene; record into "
+                            "another folder, or pass --overwrite to replace them");
+    }
+  }
+  if (args.overwrite || !found || !*found || found->value().version != manifest.version)
+    if (Status s = write_manifest(plan.dir, manifest); !s) return fail_runtime(s.message());
+  int stale = remove_stale_temporaries(plan.dir);
+  if (plan.aov) stale += remove_stale_temporaries(plan.dir / "aov");
+  if (stale > 0) std::fprintf(stderr, "record: removed %d temporary file%s left by an interrupted run\n", stale, stale > 1 ? "s" : "");
   for (int frame : *share) {
-    if (frame_done(plan.dir, frame, plan.exr, plan.aov)) ++plan.skipped;
+    if (!args.overwrite && frame_done(plan.dir, frame, plan.exr, plan.aov, args.verify)) ++plan.skipped;
     else plan.frames.push_back(frame);
   }
 
+  // --quiet: no progress, no summary, no info lines; warnings and errors still print.
+  std::FILE* progress_stream = stderr;
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> null_stream(nullptr, &std::fclose);
+  if (args.quiet) {
+    set_log_level(LogLevel::quiet);
+    null_stream.reset(std::fopen("/dev/null", "w"));
+    if (null_stream) progress_stream = null_stream.get();
+  }
   std::signal(SIGINT, on_interrupt);
   std::signal(SIGTERM, on_interrupt);
   std::optional<RecordProgress> progress;
   if (plan.frames.empty()) {
-    progress.emplace(0, plan.skipped);  // resume of a finished run: no device needed
+    progress.emplace(0, plan.skipped, progress_stream);  // resume of a finished run: no device needed
   } else {
     for (const scene::Character& character : scene.characters)
       if (scene::is_builtin_mannequin(character.model) && !std::filesystem::exists(assets_dir() / "mannequin.glb", error))
         return fail_runtime((assets_dir() / "mannequin.glb").string() +
                             " is missing: create it with `proxygi mannequin -o <assets>/mannequin.glb` or point "
                             "$PROXYGI_ASSETS at a folder holding it");
+    // The world first: a missing or malformed model, clip or rig is bad input (exit 2), named by
+    // the scene and field, before any device is opened.
+    auto world = world::World::load(scene, {.assets_dir = assets_dir(), .write_rig_cache = true, .refit = args.refit});
+    if (!world) return fail_bad_input((args.scene.scene.empty() ? std::string("default") : args.scene.scene) + ": " + world.message());
     auto context = gpu::Context::create({.device_request = args.device});
     if (!context) return fail_runtime(context.message());
-    auto renderer = gpu::SceneRenderer::create(**context, scene, {assets_dir(), true});
+    auto renderer = gpu::SceneRenderer::create(**context, std::shared_ptr<const world::World>(std::move(*world)), scene.render,
+                                               std::uint32_t(scene.output.width), std::uint32_t(scene.output.height));
     if (!renderer) return fail_runtime(renderer.message());
-    progress.emplace(int(plan.frames.size()), plan.skipped);
+    progress.emplace(int(plan.frames.size()), plan.skipped, progress_stream);
     const Status rendered = plan.aov ? render_with_aovs(**renderer, plan, *progress)
                                      : render_in_flight(**renderer, plan, *progress);
     if (!rendered) {
@@ -185,7 +226,6 @@ int run_record(const RecordArgs& args) {
   progress->finish();
   if (g_interrupted) return fail_runtime("interrupted; finished frames are kept, run the same command to resume");
 
-  const bool want_mp4 = (args.mp4 || has_format(scene.output, scene::OutputFormat::mp4)) && !args.no_mp4;
   if (!want_mp4) return kExitOk;
   if (!args.shard.empty()) {
     std::fprintf(stderr, "record: shards do not encode video; when all shards are done, run again without --shard\n");
@@ -203,8 +243,7 @@ void add_record_command(CLI::App& app, CommandRunner& runner) {
       "record",
       "Render a scene headless to DIR/frame_%05d.png (+ .exr, + video.mp4). Resumable: frames whose files "
       "exist are skipped; files are written atomically.");
-  command->add_option("scene", args->scene,
-                      "Scene JSON file, or 'default' / 'crowd' for a built-in scene (default: 'default')");
+  add_scene_options(*command, args->scene, true);
   command->add_option("-o,--output", args->output, "Output folder (created if missing)")->required();
   command->add_option("--frames", args->frames,
                       "A:B, first and last frame (inclusive) within the scene's output range (default: all)");
@@ -221,6 +260,12 @@ void add_record_command(CLI::App& app, CommandRunner& runner) {
                     "indirect,upsampled}.exr and _proxies.png");
   command->add_option("--width", args->width, "Override the scene's output width")->check(CLI::Range(16, 8192));
   command->add_option("--height", args->height, "Override the scene's output height")->check(CLI::Range(16, 8192));
+  command->add_flag("--overwrite", args->overwrite,
+                    "Render every frame again, also into a folder recorded from another scene or size");
+  command->add_flag("--refit", args->refit,
+                    "Fit every proxy rig again and write it, also a rig file the scene names (else used as it is)");
+  command->add_flag("-q,--quiet", args->quiet, "Print only warnings and errors (for scripts)");
+  command->add_flag("--verify", args->verify, "Decode the frames already in the folder; render again those that do not decode");
   add_device_option(*command, args->device);
   command->callback([args, &runner] { runner = [args] { return run_record(*args); }; });
 }

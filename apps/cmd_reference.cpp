@@ -6,6 +6,10 @@
 // SCENE is a scene file, or "default" / "crowd" for a built-in scene (a file by that name wins).
 // The scene is loaded and posed by world::World (the GPU renderer's rules), without proxy rigs.
 // Bad arguments or scenes exit 2, failures while rendering or writing exit 1.
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -14,6 +18,7 @@
 #include "apps/commands.h"
 #include "image/image.h"
 #include "ref/embree_scene.h"
+#include "apps/scene_input.h"
 #include "ref/scene_geometry.h"
 #include "ref/path_tracer.h"
 #include "ref/path_tracer_lighting.h"
@@ -29,7 +34,7 @@ namespace proxygi::app {
 namespace {
 
 struct ReferenceArgs {
-  std::string scene = "default";
+  SceneArgs scene;
   int frame = 0;
   int spp = 64;
   std::string output;
@@ -47,14 +52,6 @@ struct ReferenceArgs {
   std::string preview;  // optional PNG of OUT.exr (clamped, sRGB), for a quick look
 };
 
-Result<scene::Scene> scene_from_argument(const std::string& name) {
-  std::error_code error;
-  const bool is_file = std::filesystem::is_regular_file(name, error);
-  if (!is_file && name == "default") return scene::default_scene();
-  if (!is_file && name == "crowd") return scene::crowd_scene();
-  return scene::load_scene(name);
-}
-
 std::string format_duration(double seconds) {
   char text[32];
   if (seconds >= 3600.0) std::snprintf(text, sizeof text, "%dh%02dm", int(seconds / 3600.0), int(std::fmod(seconds, 3600.0) / 60.0));
@@ -64,10 +61,20 @@ std::string format_duration(double seconds) {
 }
 
 int run_reference(const ReferenceArgs& args) {
-  auto loaded = scene_from_argument(args.scene);
+  {
+    std::string extension = std::filesystem::path(args.output).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (extension != ".exr")
+      return fail_bad_input("-o '" + args.output + "': the reference is linear radiance, written as .exr (use --preview FILE.png "
+                            "for a PNG to look at)");
+  }
+  auto loaded = open_scene(args.scene);
   if (!loaded) return fail_bad_input(loaded.message());
   const scene::Scene& scene = *loaded;
-  if (args.frame < 0) return fail_bad_input("--frame must be >= 0");
+  const int last = scene::last_frame(scene.output);
+  if (args.frame < scene.output.first_frame || args.frame > last)
+    return fail_bad_input("--frame " + std::to_string(args.frame) + " is outside the scene's frames " +
+                          std::to_string(scene.output.first_frame) + ":" + std::to_string(last));
   const int width = args.width > 0 ? args.width : scene.output.width;
   const int height = args.height > 0 ? args.height : scene.output.height;
 
@@ -79,7 +86,7 @@ int run_reference(const ReferenceArgs& args) {
   const int lighting_order = args.lighting_order > 0 ? args.lighting_order : scene.render.sh_order;
 
   ref::ReferenceRecord record;
-  record.scene = args.scene;
+  record.scene = args.scene.scene.empty() ? std::string("default") : args.scene.scene;
   record.frame = args.frame;
   record.time_s = scene::frame_time_s(scene.output, args.frame);
   record.width = width;
@@ -112,7 +119,7 @@ int run_reference(const ReferenceArgs& args) {
   }
 
   auto world = world::World::load(scene, {.assets_dir = assets_dir(), .load_rigs = false});
-  if (!world) return fail_bad_input(world.message());
+  if (!world) return fail_bad_input(record.scene + ": " + world.message());
   world::WorldState state;
   if (Status evaluated = (*world)->evaluate(record.time_s, std::nullopt, state); !evaluated)
     return fail_bad_input(evaluated.message());
@@ -128,7 +135,7 @@ int run_reference(const ReferenceArgs& args) {
   const scene::CameraState& camera = state.camera;
 
   std::fprintf(stderr, "reference: %s frame %d (t = %.3f s), %d triangles, %dx%d, %d spp (samples %u..%u), %s, %s lighting\n",
-               args.scene.c_str(), args.frame, record.time_s, int(geometry->triangle_count()), width, height, args.spp,
+               record.scene.c_str(), args.frame, record.time_s, int(geometry->triangle_count()), width, height, args.spp,
                record.samples, record.samples + std::uint32_t(args.spp) - 1, args.mode.c_str(), args.lighting.c_str());
   ref::RenderJob job;
   job.width = width;
@@ -139,14 +146,22 @@ int run_reference(const ReferenceArgs& args) {
   job.sampler = args.sampler == "random" ? ref::Sampler::random : ref::Sampler::sobol;
   job.threads = args.threads;
   ref::RenderStats stats;
-  auto progress = [](const ref::RenderProgress& p) {
-    std::fprintf(stderr, "\r  %5.1f%%  %s elapsed  ETA %s  %.2f Mrays/s   ", 100.0 * p.tiles_done / std::max(p.tiles_total, 1),
+  // On a terminal one line rewritten with \r; into a file or pipe a line per tenth of the work.
+  const bool terminal = isatty(fileno(stderr)) != 0;
+  int last_tenth = -1;
+  auto progress = [terminal, &last_tenth](const ref::RenderProgress& p) {
+    const double percent = 100.0 * p.tiles_done / std::max(p.tiles_total, 1);
+    if (!terminal) {
+      if (int(percent / 10.0) == last_tenth) return;
+      last_tenth = int(percent / 10.0);
+    }
+    std::fprintf(stderr, "%s  %5.1f%%  %s elapsed  ETA %s  %.2f Mrays/s%s", terminal ? "\r" : "", percent,
                  format_duration(p.elapsed_s).c_str(), format_duration(p.eta_s).c_str(),
-                 p.elapsed_s > 0.0 ? double(p.rays) / p.elapsed_s * 1e-6 : 0.0);
+                 p.elapsed_s > 0.0 ? double(p.rays) / p.elapsed_s * 1e-6 : 0.0, terminal ? "   " : "\n");
     std::fflush(stderr);
   };
   auto sums = ref::render_samples(tracer, camera, job, &stats, progress);
-  std::fprintf(stderr, "\n");
+  if (terminal) std::fprintf(stderr, "\n");
   if (!sums) return fail_bad_input(sums.message());
   if (previous) {
     if (Status s = previous->merge(*sums); !s) return fail_bad_input("--accumulate: " + s.message());
@@ -183,8 +198,7 @@ int run_reference(const ReferenceArgs& args) {
 void add_reference_command(CLI::App& app, CommandRunner& runner) {
   auto args = std::make_shared<ReferenceArgs>();
   CLI::App* command = app.add_subcommand("reference", "Path-trace a ground-truth frame with Embree");
-  command->add_option("scene", args->scene, "Scene JSON file, or 'default' / 'crowd' for a built-in scene")
-      ->required();
+  add_scene_options(*command, args->scene, false);
   command->add_option("--frame", args->frame, "Frame index (scene time = frame / fps)")->required();
   command->add_option("--spp", args->spp, "Samples (paths) per pixel to trace in this run")
       ->required()

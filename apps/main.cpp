@@ -64,7 +64,19 @@ int main(int argc, char** argv) {
   } catch (const CLI::Success& success) {  // --version
     return app.exit(success);
   } catch (const CLI::ParseError& error) {
-    std::fprintf(stderr, "proxygi: %s\n\n%s", error.what(), app.help().c_str());
+    // Name an unknown flag first: CLI11 reports a missing required argument before extras.
+    std::string unknown;
+    for (const CLI::App* command : app.get_subcommands())
+      for (const std::string& extra : command->remaining())
+        if (unknown.empty() && extra.size() > 1 && extra[0] == '-') unknown = extra;
+    const CLI::App* command = app.get_subcommands().empty() ? &app : app.get_subcommands().front();
+    if (app.get_subcommands().empty() && !app.remaining().empty() && app.remaining().front()[0] != '-')
+      std::fprintf(stderr, "proxygi: unknown command '%s'\n\n%s", app.remaining().front().c_str(), app.help().c_str());
+    else if (!unknown.empty())
+      std::fprintf(stderr, "proxygi %s: unknown option '%s'\n\n%s", command->get_name().c_str(), unknown.c_str(),
+                   command->help().c_str());
+    else
+      std::fprintf(stderr, "proxygi: %s\n\n%s", error.what(), command == &app ? app.help().c_str() : command->help().c_str());
     return kExitBadInput;
   }
   if (!runner) return fail_bad_input("no command to run");

@@ -1,13 +1,22 @@
 #include "apps/record_output.h"
 
+#include <signal.h>
+
 #include <array>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 #include <system_error>
 
+#include <nlohmann/json.hpp>
+
+#include "base/atomic_file.h"
+
 namespace proxygi::app {
 namespace {
+
+constexpr const char* kAovExrNames[] = {"receivers", "occlusion_dc", "direct", "indirect", "upsampled"};
 
 std::string frame_stem(int frame) {
   char name[32];
@@ -42,11 +51,84 @@ std::filesystem::path aov_file(const std::filesystem::path& dir, int frame, std:
   return dir / "aov" / (frame_stem(frame) + "_" + std::string(name) + "." + std::string(extension));
 }
 
-bool frame_done(const std::filesystem::path& dir, int frame, bool exr, bool aov) {
+bool frame_done(const std::filesystem::path& dir, int frame, bool exr, bool aov, bool verify) {
+  std::vector<std::filesystem::path> files{frame_file(dir, frame, "png")};
+  if (exr) files.push_back(frame_file(dir, frame, "exr"));
+  if (aov) {
+    for (const char* name : kAovExrNames) files.push_back(aov_file(dir, frame, name, "exr"));
+    files.push_back(aov_file(dir, frame, "proxies", "png"));
+  }
   std::error_code error;
-  if (!std::filesystem::is_regular_file(frame_file(dir, frame, "png"), error)) return false;
-  if (exr && !std::filesystem::is_regular_file(frame_file(dir, frame, "exr"), error)) return false;
-  return !aov || std::filesystem::is_regular_file(aov_file(dir, frame, "proxies", "png"), error);
+  for (const std::filesystem::path& file : files) {
+    if (!std::filesystem::is_regular_file(file, error)) return false;
+    if (verify && !image::read_image(file)) return false;
+  }
+  return true;
+}
+
+std::filesystem::path manifest_file(const std::filesystem::path& dir) { return dir / "record.json"; }
+
+Result<std::optional<RecordManifest>> read_manifest(const std::filesystem::path& dir) {
+  const std::filesystem::path file = manifest_file(dir);
+  std::error_code error;
+  if (!std::filesystem::exists(file, error)) return std::optional<RecordManifest>();
+  auto bytes = read_file(file, 1 << 20);
+  if (!bytes) return bytes.error();
+  try {
+    const nlohmann::json j = nlohmann::json::parse(bytes->begin(), bytes->end());
+    if (!j.is_object() || j.value("schema", std::string()) != "proxygi.record")
+      return make_error(file.string() + ": not a proxygi record manifest");
+    RecordManifest m;
+    m.scene_hash = j.value("scene_hash", std::string());
+    m.width = j.value("width", 0);
+    m.height = j.value("height", 0);
+    m.version = j.value("proxygi", std::string());
+    return std::optional<RecordManifest>(m);
+  } catch (const nlohmann::json::exception& e) {
+    return make_error(file.string() + ": not a proxygi record manifest (" + e.what() + ")");
+  }
+}
+
+Status write_manifest(const std::filesystem::path& dir, const RecordManifest& manifest) {
+  nlohmann::ordered_json j = {{"schema", "proxygi.record"}, {"version", 1}, {"proxygi", manifest.version},
+                              {"scene_hash", manifest.scene_hash}, {"width", manifest.width}, {"height", manifest.height}};
+  return write_file_atomically(manifest_file(dir), j.dump(2) + "\n");
+}
+
+std::string manifest_mismatch(const RecordManifest& found, const RecordManifest& wanted) {
+  if (found.width != wanted.width || found.height != wanted.height)
+    return "it was recorded at " + std::to_string(found.width) + "x" + std::to_string(found.height) + ", not " +
+           std::to_string(wanted.width) + "x" + std::to_string(wanted.height);
+  if (found.scene_hash != wanted.scene_hash) return "it was recorded from a different scene";
+  return {};
+}
+
+bool has_frame_files(const std::filesystem::path& dir) {
+  std::error_code error;
+  for (auto it = std::filesystem::directory_iterator(dir, error); !error && it != std::filesystem::directory_iterator();
+       it.increment(error)) {
+    const std::string name = it->path().filename().string();
+    if (name.rfind("frame_", 0) == 0 && (name.ends_with(".png") || name.ends_with(".exr"))) return true;
+  }
+  return false;
+}
+
+int remove_stale_temporaries(const std::filesystem::path& dir) {
+  int removed = 0;
+  std::error_code error;
+  for (auto it = std::filesystem::directory_iterator(dir, error); !error && it != std::filesystem::directory_iterator();
+       it.increment(error)) {
+    const std::string name = it->path().filename().string();
+    const std::size_t at = name.rfind(".tmp-");
+    if (at == std::string::npos || at + 5 >= name.size()) continue;
+    const std::string digits = name.substr(at + 5);
+    if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) continue;
+    const pid_t pid = static_cast<pid_t>(std::stol(digits));
+    if (pid <= 0 || (::kill(pid, 0) == 0 || errno != ESRCH)) continue;  // alive (or not ours to judge)
+    std::error_code ignored;
+    if (std::filesystem::remove(it->path(), ignored)) ++removed;
+  }
+  return removed;
 }
 
 image::ImageF ldr_to_linear(std::span<const std::uint8_t> rgba8, int width, int height) {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <map>
+#include <set>
 #include <numbers>
 
 namespace proxygi::proxies {
@@ -11,12 +13,19 @@ const char* binding_name(Binding binding) { return binding == Binding::rigid ? "
 RigSummary summarize_rig(const ProxyRig& rig) {
   RigSummary summary;
   summary.sphere_count = int(rig.spheres.size());
+  std::vector<int> nodes;  // node of each spheres_per_bone entry
+  std::map<std::string, std::set<int>> nodes_by_name;
+  for (const ProxySphere& s : rig.spheres) nodes_by_name[s.bone].insert(s.node);
   for (const ProxySphere& s : rig.spheres) {
-    auto it = std::find_if(summary.spheres_per_bone.begin(), summary.spheres_per_bone.end(),
-                           [&](const auto& entry) { return entry.first == s.bone; });
-    if (it == summary.spheres_per_bone.end()) summary.spheres_per_bone.emplace_back(s.bone, 1);
-    else ++it->second;
-    summary.min_radius = summary.sphere_count > 0 && &s == &rig.spheres.front() ? s.radius : std::min(summary.min_radius, s.radius);
+    const auto it = std::find(nodes.begin(), nodes.end(), s.node);
+    if (it == nodes.end()) {
+      const bool ambiguous = s.bone.empty() || nodes_by_name[s.bone].size() > 1;
+      summary.spheres_per_bone.emplace_back(ambiguous ? s.bone + "#" + std::to_string(s.node) : s.bone, 1);
+      nodes.push_back(s.node);
+    } else {
+      ++summary.spheres_per_bone[std::size_t(it - nodes.begin())].second;
+    }
+    summary.min_radius = &s == &rig.spheres.front() ? s.radius : std::min(summary.min_radius, s.radius);
     summary.max_radius = std::max(summary.max_radius, s.radius);
     summary.total_volume += 4.0f / 3.0f * std::numbers::pi_v<float> * s.radius * s.radius * s.radius;
   }

@@ -1,6 +1,7 @@
 #pragma once
 // ProxyRig: a character's sphere proxies as fitted (proxies/fit.h) or loaded from a
-// `*.proxies.json` file (proxies/rig_file.h), bound to its skeleton by node name.
+// `*.proxies.json` file (proxies/rig_file.h), bound to its skeleton by node index
+// (names are kept for people; glTF allows empty and repeated node names).
 //
 // Spaces and units: a sphere's center is in the bone space of its bone node (the node's local
 // frame, where world = node_world[bone] * center), meters; its radius is in that same space.
@@ -26,8 +27,8 @@ enum class Binding { rigid, blended };
 const char* binding_name(Binding binding);
 
 struct ProxySphere {
-  std::string bone;            // node name of the bone (a joint, or the node of an unskinned mesh)
-  int node = -1;               // node index of that bone
+  std::string bone;            // name of the bone node, for people (may be empty or repeated)
+  int node = -1;               // node index of the bone (a joint, or the node of an unskinned mesh): the binding
   glm::vec3 center{0.0f};      // bone space, meters
   float radius = 0.0f;         // bone space, meters, > 0
   glm::vec3 albedo{1.0f};      // linear RGB in [0, 1]
@@ -56,7 +57,7 @@ struct BindingError {
 };
 
 struct ProxyRig {
-  static constexpr int kSchemaVersion = 1;
+  static constexpr int kSchemaVersion = 2;
   std::string model;              // model file name the rig was fitted to
   std::string model_hash;         // "fnv1a64:<16 hex digits>" of the model file's bytes
   Binding binding = Binding::blended;
@@ -80,7 +81,9 @@ struct RigSummary {
   int sphere_count = 0;
   int bone_count = 0;                 // bones with at least one sphere
   float min_radius = 0.0f, max_radius = 0.0f, total_volume = 0.0f;  // bone space, meters / m³
-  std::vector<std::pair<std::string, int>> spheres_per_bone;  // in first-appearance order
+  // Label ("name", or "name#node" / "#node" when the name is empty or shared) and count, in
+  // first-appearance order, one entry per bone node.
+  std::vector<std::pair<std::string, int>> spheres_per_bone;
 };
 RigSummary summarize_rig(const ProxyRig& rig);
 std::string format_rig_summary(const ProxyRig& rig);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <algorithm>
 #include <unordered_map>
 
 #include <nlohmann/json.hpp>
@@ -96,6 +97,49 @@ Result<std::string> hash_file(const std::filesystem::path& path) {
   return content_hash(*bytes);
 }
 
+std::vector<std::string> node_name_warnings(const anim::Character& character) {
+  // The nodes that can carry spheres: skin joints and mesh nodes.
+  std::vector<char> bone(character.nodes.size(), 0);
+  for (const anim::Skin& skin : character.skins)
+    for (int joint : skin.joints)
+      if (joint >= 0 && std::size_t(joint) < bone.size()) bone[std::size_t(joint)] = 1;
+  for (std::size_t n = 0; n < character.nodes.size(); ++n)
+    if (character.nodes[n].mesh >= 0) bone[n] = 1;
+  std::vector<std::string> warnings;
+  std::vector<int> unnamed;
+  std::unordered_map<std::string, std::vector<int>> named;
+  std::vector<std::string> order;
+  for (std::size_t n = 0; n < character.nodes.size(); ++n) {
+    if (!bone[n]) continue;
+    const std::string& name = character.nodes[n].name;
+    if (name.empty()) {
+      unnamed.push_back(int(n));
+      continue;
+    }
+    auto& list = named[name];
+    if (list.empty()) order.push_back(name);
+    list.push_back(int(n));
+  }
+  auto node_list = [](const std::vector<int>& nodes) {
+    std::string out;
+    for (std::size_t i = 0; i < nodes.size() && i < 8; ++i) {
+      if (i > 0) out += ", ";
+      out += std::to_string(nodes[i]);
+    }
+    if (nodes.size() > 8) out += ", ... (" + std::to_string(nodes.size()) + " in all)";
+    return out;
+  };
+  if (!unnamed.empty())
+    warnings.push_back(character.source + ": " + std::to_string(unnamed.size()) + " bone node" +
+                       (unnamed.size() > 1 ? "s have" : " has") + " no name (nodes " + node_list(unnamed) +
+                       "); proxy spheres are bound by node index");
+  for (const std::string& name : order)
+    if (named[name].size() > 1)
+      warnings.push_back(character.source + ": bone name \"" + name + "\" is used by " + std::to_string(named[name].size()) +
+                         " nodes (" + node_list(named[name]) + "); proxy spheres are bound by node index");
+  return warnings;
+}
+
 std::filesystem::path default_rig_path(const std::filesystem::path& model) {
   std::filesystem::path p = model;
   p.replace_extension(".proxies.json");
@@ -103,6 +147,7 @@ std::filesystem::path default_rig_path(const std::filesystem::path& model) {
 }
 
 std::string rig_to_json(const ProxyRig& rig, const anim::Character& character) {
+  (void)character;  // spheres and weights name nodes by index; the names are the rig's own
   std::string out = "{\n";
   out += "  \"schema\": \"proxygi.proxies\",\n  \"version\": " + std::to_string(ProxyRig::kSchemaVersion) + ",\n";
   out += "  \"model\": " + json(rig.model).dump() + ",\n";
@@ -116,16 +161,15 @@ std::string rig_to_json(const ProxyRig& rig, const anim::Character& character) {
     out += "    {\"bone\": " + json(s.bone).dump() + ", \"node\": " + std::to_string(s.node) + ", \"center\": " + vec3(s.center) +
            ", \"radius\": " + fmt(s.radius) + ", \"albedo\": " + vec3(s.albedo);
     if (s.weight_nodes[0] >= 0) {
-      out += ", \"weights\": {";
+      // By node index (names may be empty or repeated); [node, weight] pairs.
+      out += ", \"weights\": [";
       for (int k = 0; k < kSphereWeights && s.weight_nodes[std::size_t(k)] >= 0; ++k) {
-        const int node = s.weight_nodes[std::size_t(k)];
-        const std::string name = node < int(character.nodes.size()) ? character.nodes[std::size_t(node)].name : std::to_string(node);
         if (k > 0) out += ", ";
-        out += json(name).dump();
-        out += ": ";
-        out += fmt(s.weights[std::size_t(k)]);
+        char pair[64];
+        std::snprintf(pair, sizeof pair, "[%d, %.7g]", s.weight_nodes[std::size_t(k)], double(s.weights[std::size_t(k)]));
+        out += pair;
       }
-      out += "}";
+      out += "]";
     }
     out += i + 1 < rig.spheres.size() ? "},\n" : "}\n";
   }
@@ -165,8 +209,8 @@ Result<ProxyRig> parse_rig_document(std::string_view text, const std::string& fi
   if (root.value("schema", std::string()) != "proxygi.proxies") return top("\"schema\" must be \"proxygi.proxies\"");
   if (!root.contains("version") || !root["version"].is_number_integer()) return top("\"version\" must be an integer");
   const int version = root["version"].get<int>();
-  if (version != ProxyRig::kSchemaVersion)
-    return top("schema version " + std::to_string(version) + " is not supported (this proxygi reads version " +
+  if (version < 1 || version > ProxyRig::kSchemaVersion)
+    return top("schema version " + std::to_string(version) + " is not supported (this proxygi reads versions 1 to " +
                std::to_string(ProxyRig::kSchemaVersion) + ")");
   ProxyRig rig;
   rig.model = root.value("model", std::string());
@@ -217,17 +261,29 @@ Result<ProxyRig> parse_rig_document(std::string_view text, const std::string& fi
     if (!e.is_object()) return bad("must be an object");
     ProxySphere s;
     s.source_line = line;
-    if (!e.contains("bone") || !e["bone"].is_string()) return bad("\"bone\" must be a node name");
-    s.bone = e["bone"].get<std::string>();
-    const auto named = nodes_named.find(s.bone);
-    if (named == nodes_named.end()) return bad("bone \"" + s.bone + "\" is not a node of " + character.source);
-    s.node = named->second.front();
+    // Bound by node index; the name is for people and a check that the node is still that bone.
+    if (e.contains("bone") && !e["bone"].is_string()) return bad("\"bone\" must be a node name");
+    if (e.contains("bone")) s.bone = e["bone"].get<std::string>();
     if (e.contains("node")) {
       if (!e["node"].is_number_integer()) return bad("\"node\" must be an integer");
-      const int node = e["node"].get<int>();
-      if (std::find(named->second.begin(), named->second.end(), node) == named->second.end())
-        return bad("node " + std::to_string(node) + " is not named \"" + s.bone + "\"");
-      s.node = node;
+      const long long node = e["node"].get<long long>();
+      if (node < 0 || node >= static_cast<long long>(character.nodes.size()))
+        return bad("node " + std::to_string(node) + " is out of range (" + character.source + " has " +
+                   std::to_string(character.nodes.size()) + " nodes)");
+      s.node = int(node);
+      const std::string& actual = character.nodes[std::size_t(node)].name;
+      if (e.contains("bone") && actual != s.bone)
+        return bad("node " + std::to_string(node) + " is not named \"" + s.bone + "\" (it is \"" + actual +
+                   "\"; was the model changed?)");
+      s.bone = actual;
+    } else {
+      if (!e.contains("bone")) return bad("needs \"node\" (a node index) or \"bone\" (a unique node name)");
+      const auto named = nodes_named.find(s.bone);
+      if (named == nodes_named.end()) return bad("bone \"" + s.bone + "\" is not a node of " + character.source);
+      if (named->second.size() > 1)
+        return bad("bone \"" + s.bone + "\" names " + std::to_string(named->second.size()) +
+                   " nodes of " + character.source + "; give \"node\" (its index)");
+      s.node = named->second.front();
     }
     if (!e.contains("center") || !finite3(e["center"])) return bad("\"center\" must be 3 finite numbers");
     s.center = glm::vec3(e["center"][0].get<float>(), e["center"][1].get<float>(), e["center"][2].get<float>());
@@ -241,22 +297,45 @@ Result<ProxyRig> parse_rig_document(std::string_view text, const std::string& fi
       if (s.albedo.r < 0.0f || s.albedo.g < 0.0f || s.albedo.b < 0.0f) return bad("albedo must be >= 0");
     }
     if (e.contains("weights")) {
+      // [[node, weight], ...] (version 2), or {"unique node name": weight, ...} (version 1).
       const json& w = e["weights"];
-      if (!w.is_object()) return bad("\"weights\" must be an object {\"node name\": weight}");
+      if (!w.is_object() && !w.is_array())
+        return bad("\"weights\" must be [[node index, weight], ...] or {\"node name\": weight}");
       if (w.size() > std::size_t(kSphereWeights)) return bad("at most 4 weights");
       std::vector<std::pair<int, float>> entries;
       float total = 0.0f;
-      for (const auto& [name, value] : w.items()) {
-        const auto node = nodes_named.find(name);
-        if (node == nodes_named.end()) return bad("weight bone \"" + name + "\" is not a node of " + character.source);
+      auto add = [&](int node, const std::string& label, const json& value) -> Status {
         if (!value.is_number() || !std::isfinite(value.get<double>()) || value.get<double>() < 0.0)
-          return bad("weight of \"" + name + "\" must be a finite number >= 0");
-        entries.emplace_back(node->second.front(), value.get<float>());
+          return make_error("weight of " + label + " must be a finite number >= 0");
+        for (const auto& [other, unused] : entries)
+          if (other == node) return make_error("node " + std::to_string(node) + " is weighted twice");
+        entries.emplace_back(node, value.get<float>());
         total += value.get<float>();
+        return {};
+      };
+      if (w.is_array()) {
+        for (const json& pair : w) {
+          if (!pair.is_array() || pair.size() != 2 || !pair[0].is_number_integer())
+            return bad("each weight must be [node index, weight]");
+          const long long node = pair[0].get<long long>();
+          if (node < 0 || node >= static_cast<long long>(character.nodes.size()))
+            return bad("weight node " + std::to_string(node) + " is out of range (" + character.source + " has " +
+                       std::to_string(character.nodes.size()) + " nodes)");
+          if (Status added = add(int(node), "node " + std::to_string(node), pair[1]); !added) return bad(added.message());
+        }
+      } else {
+        for (const auto& [name, value] : w.items()) {
+          const auto node = nodes_named.find(name);
+          if (node == nodes_named.end()) return bad("weight bone \"" + name + "\" is not a node of " + character.source);
+          if (node->second.size() > 1)
+            return bad("weight bone \"" + name + "\" names " + std::to_string(node->second.size()) +
+                       " nodes; weight by node index: [[node, weight], ...]");
+          if (Status added = add(node->second.front(), "\"" + name + "\"", value); !added) return bad(added.message());
+        }
       }
       if (!entries.empty()) {
         if (!(total > 0.0f)) return bad("weights must have a positive sum");
-        std::sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
+        std::stable_sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
         for (std::size_t k = 0; k < entries.size(); ++k) {
           s.weight_nodes[k] = entries[k].first;
           s.weights[k] = entries[k].second / total;

@@ -25,6 +25,7 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Context& context, c
   world::WorldOptions world_options;
   world_options.assets_dir = options.assets_dir;
   world_options.write_rig_cache = options.write_rig_cache;
+  world_options.refit = options.refit;
   auto world = world::World::load(scene, world_options);
   if (!world) return world.error();
   return create(context, std::shared_ptr<const world::World>(std::move(*world)), scene.render,

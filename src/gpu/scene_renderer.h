@@ -33,6 +33,7 @@ namespace proxygi::gpu {
 struct SceneRendererOptions {
   std::filesystem::path assets_dir;  // where assets/mannequin.glb and its rig live
   bool write_rig_cache = true;       // write fitted rigs next to their models
+  bool refit = false;                // refit every rig, a scene's own rig file too (world::WorldOptions)
 };
 
 struct FrameStatistics {

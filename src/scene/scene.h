@@ -110,6 +110,10 @@ struct Character {
   // Proxy rig (*.proxies.json) relative to the scene folder; when absent the rig is cached
   // next to the model (default_proxy_path).
   std::optional<std::string> proxies;
+  // Fit settings of the cached rig (proxies/fit.h FitOptions; defaults 0.05 and 96). A rig named
+  // in `proxies` is used as it was made, whatever these say.
+  std::optional<float> proxy_tolerance;  // relative to the bind-pose diagonal, (0, 1]
+  std::optional<int> proxy_max_spheres;  // [1, 4096]
   std::optional<WalkPath> path;
   // Schema version 2: clip segments over scene time. When non-empty it replaces clip, speed and
   // time_offset (which the file may then not give).

@@ -104,6 +104,8 @@ Character read_character(const json& value, const std::string& path, int version
   c.time_offset_s = r.number("time_offset", c.time_offset_s);
   if (const json* t = r.get("transform")) c.transform = read_transform(*t, r.field("transform"));
   if (const json* p = r.get("proxies")) c.proxies = detail::read_string(*p, r.field("proxies"));
+  if (r.has("proxy_tolerance")) c.proxy_tolerance = r.number("proxy_tolerance", 0.0f);
+  if (r.has("proxy_max_spheres")) c.proxy_max_spheres = r.integer("proxy_max_spheres", 0);
   if (const json* p = r.get("path")) c.path = read_walk_path(*p, r.field("path"));
   r.finish();
   return c;
@@ -178,7 +180,8 @@ CameraKey read_camera_key(const json& value, const std::string& path) {
 Camera read_camera(const json& value, const std::string& path) {
   ObjectReader r(value, path);
   Camera c;
-  const std::string type = detail::read_string(r.require("type"), r.field("type"));
+  // No "type": a fixed camera (README, "Scene files").
+  const std::string type = r.has("type") ? detail::read_string(*r.get("type"), r.field("type")) : std::string("fixed");
   c.near_m = r.number("near", c.near_m);
   c.far_m = r.number("far", c.far_m);
   if (type == "fixed") {

@@ -136,6 +136,10 @@ void validate_character(const Character& c, const std::string& path) {
   finite(c.time_offset_s, join_path(path, "time_offset"));
   validate_transform(c.transform, join_path(path, "transform"));
   if (c.proxies) non_empty(*c.proxies, join_path(path, "proxies"));
+  if (c.proxy_tolerance && !(*c.proxy_tolerance > 0.0f && *c.proxy_tolerance <= 1.0f))
+    fail(join_path(path, "proxy_tolerance"), "must be in (0, 1] (got " + show(*c.proxy_tolerance) + ")");
+  if (c.proxy_max_spheres && (*c.proxy_max_spheres < 1 || *c.proxy_max_spheres > 4096))
+    fail(join_path(path, "proxy_max_spheres"), "must be in [1, 4096] (got " + std::to_string(*c.proxy_max_spheres) + ")");
   if (c.path) {
     const std::string p = join_path(path, "path");
     finite(c.path->start, join_path(p, "start"));

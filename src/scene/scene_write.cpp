@@ -76,6 +76,8 @@ ojson character_json(const Character& c) {
   }
   j["transform"] = transform_json(c.transform);
   if (c.proxies) j["proxies"] = *c.proxies;
+  if (c.proxy_tolerance) j["proxy_tolerance"] = number(*c.proxy_tolerance);
+  if (c.proxy_max_spheres) j["proxy_max_spheres"] = *c.proxy_max_spheres;
   if (c.path) {
     j["path"] = {{"start", vec(c.path->start)},
                  {"end", vec(c.path->end)},

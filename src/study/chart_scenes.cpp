@@ -6,6 +6,7 @@
 
 #include "base/log.h"
 #include "scene/scene_defaults.h"
+#include "world/model_stage.h"
 #include "world/world.h"
 
 namespace proxygi::study {
@@ -16,22 +17,6 @@ struct SharedCharacter {
   const char* file;
   scene::ClipRef clip;
 };
-
-// Bounds of the world's one character posed at scene time 0 (its transform still identity).
-Result<std::pair<glm::vec3, glm::vec3>> posed_bounds(const world::World& world) {
-  world::WorldState state;
-  if (Status evaluated = world.evaluate(0.0, std::nullopt, state); !evaluated) return evaluated.error();
-  auto primitives = world.pose_instance(state, 0);
-  if (!primitives) return primitives.error();
-  glm::vec3 low(std::numeric_limits<float>::max()), high(-std::numeric_limits<float>::max());
-  for (const anim::PosedPrimitive& primitive : *primitives)
-    for (const glm::vec3& p : primitive.positions) {
-      low = glm::min(low, p);
-      high = glm::max(high, p);
-    }
-  if (!(low.x <= high.x)) return make_error(world.scene().characters.front().model + ": no geometry to frame");
-  return std::make_pair(low, high);
-}
 
 Result<ChartScene> character_scene(const SharedCharacter& shared, const ChartSceneOptions& options) {
   ChartScene chart;
@@ -47,7 +32,7 @@ Result<ChartScene> character_scene(const SharedCharacter& shared, const ChartSce
   // The model is imported once: for its bounds here and its clip's duration below.
   auto world = world::World::load(chart.scene, {.assets_dir = options.assets_dir, .load_rigs = false});
   if (!world) return world.error();
-  auto bounds = posed_bounds(**world);
+  auto bounds = world::posed_bounds(**world, 0.0);  // the first frame (world/model_stage.h)
   if (!bounds) return bounds.error();
   const glm::vec3 extent = bounds->second - bounds->first;
   const float scale = 1.7f / std::max({extent.x, extent.y, extent.z});

@@ -9,8 +9,11 @@
 //    (anim::find_clip); a model without clips shows its rest pose (clip -1);
 //  - clip time = scene::clip_time_s, looping (anim::WrapMode::loop); root placement =
 //    scene::character_world_matrix;
-//  - rigs come from proxies::load_or_fit_rig (the cached *.proxies.json when it belongs to the
-//    model bytes, else a fresh fit, cached when WorldOptions::write_rig_cache); the mannequin
+//  - rigs come from proxies::load_or_fit_rig: a rig the scene names ("proxies") is used as it is
+//    while it belongs to the model bytes (refitted in memory, never rewritten without --refit,
+//    when they changed); else the cached *.proxies.json next to the model or in the user cache
+//    when it belongs to the model bytes and the character's proxy_tolerance / proxy_max_spheres,
+//    else a fresh fit, cached when WorldOptions::write_rig_cache (proxies/rig_cache.h); the mannequin
 //    built in code hashes as the bytes anim::encode_glb gives it (those of assets/mannequin.glb),
 //    so both forms share one cache;
 //  - static meshes are posed once at load (rest pose, clip -1, under their transform), every
@@ -34,6 +37,7 @@
 #include "anim/character.h"
 #include "anim/posed_character.h"
 #include "base/result.h"
+#include "proxies/fit.h"
 #include "proxies/proxy_rig.h"
 #include "proxies/tracking.h"
 #include "render/environment_lighting.h"
@@ -48,6 +52,7 @@ struct WorldOptions {
   std::filesystem::path assets_dir;  // where assets/mannequin.glb and its rig live
   bool load_rigs = true;             // false: no proxy rigs (the path tracer needs none)
   bool write_rig_cache = true;       // write freshly fitted rigs to their cache file
+  bool refit = false;                // --refit: refit every rig and rewrite it, a user's named rig too
 };
 
 // One model file, shared by every character instance that uses it.
@@ -129,13 +134,22 @@ class World {
   mutable std::map<int, std::unique_ptr<render::EnvironmentLighting>> environments_;
 };
 
-// The rig request the world makes for a model (hash of the model bytes, scene's rig path).
-// Exposed for `proxygi fit` and tests that want the same cache rules. `model_hash`: the content
-// hash of the model (proxies::hash_file of model_file, or of the mannequin's encoded bytes).
+// The rig request the world makes for a model. Exposed for tests that want the same cache rules.
+// `model_hash`: the content hash of the model (proxies::hash_file of model_file, or of the
+// mannequin's encoded bytes). Warnings (unnamed or duplicate bone names, refits kept in memory,
+// broken caches, the user-cache fallback) are printed with log_warning.
+struct RigSource {
+  std::filesystem::path model_file;
+  std::string model_hash;
+  std::filesystem::path rig_file;    // the scene's "proxies", or the cache next to the model
+  bool user_file = false;            // rig_file was named by the scene
+  proxies::FitOptions options;       // the character's proxy_tolerance / proxy_max_spheres
+  bool write_cache = true;
+  bool refit = false;
+};
+Result<proxies::ProxyRig> obtain_rig(const RigSource& source, const anim::Character& character);
+// The cached case with default fit settings.
 Result<proxies::ProxyRig> obtain_rig(const std::filesystem::path& model_file, const std::filesystem::path& rig_file,
                                      const anim::Character& character, bool write_cache);
-Result<proxies::ProxyRig> obtain_rig(const std::filesystem::path& model_file, const std::string& model_hash,
-                                     const std::filesystem::path& rig_file, const anim::Character& character,
-                                     bool write_cache);
 
 }  // namespace proxygi::world

@@ -71,7 +71,12 @@ Result<std::unique_ptr<Model>> make_model(const scene::Scene& scene, const scene
   const auto rig_file = scene::resolve_proxy_path(scene, entry, options.assets_dir);
   auto hash = model_hash(*model);
   if (!hash) return hash.error();
-  auto rig = obtain_rig(model->file, *hash, rig_file, model->character, options.write_rig_cache);
+  RigSource source{.model_file = model->file, .model_hash = *hash, .rig_file = rig_file,
+                   .user_file = entry.proxies.has_value(), .write_cache = options.write_rig_cache,
+                   .refit = options.refit};
+  if (entry.proxy_tolerance) source.options.tolerance = *entry.proxy_tolerance;
+  if (entry.proxy_max_spheres) source.options.max_spheres = *entry.proxy_max_spheres;
+  auto rig = obtain_rig(source, model->character);
   if (!rig) return rig.error();
   auto tracking = proxies::compile_tracking(*rig, model->character, rig->binding);
   if (!tracking) return make_error(rig_file.string() + ": " + tracking.message());
@@ -101,18 +106,23 @@ Result<StaticModel> make_static_model(const scene::Scene& scene, std::size_t ind
 
 }  // namespace
 
-Result<proxies::ProxyRig> obtain_rig(const std::filesystem::path& model_file, const std::string& model_hash,
-                                     const std::filesystem::path& rig_file, const anim::Character& character,
-                                     bool write_cache) {
+Result<proxies::ProxyRig> obtain_rig(const RigSource& source, const anim::Character& character) {
   proxies::RigRequest request;
-  request.rig_file = rig_file;
-  request.model_name = model_file.filename().string();
-  request.model_hash = model_hash;
-  request.write_cache = write_cache;
+  request.rig_file = source.rig_file;
+  request.user_file = source.user_file;
+  request.model_name = source.model_file.filename().string();
+  request.model_hash = source.model_hash;
+  request.options = source.options;
+  request.write_cache = source.write_cache;
+  request.force = source.refit;
   auto obtained = proxies::load_or_fit_rig(character, request);
-  if (!obtained) return make_error(rig_file.string() + ": " + obtained.message());
+  if (!obtained) return make_error(source.rig_file.string() + ": " + obtained.message());
+  for (const std::string& warning : proxies::node_name_warnings(character)) log_warning(warning);
+  for (const std::string& warning : obtained->warnings) log_warning("proxies: " + warning);
+  if (!obtained->write_error.empty()) log_warning("proxies: rig not cached: " + obtained->write_error);
   if (!obtained->cache_hit)
-    log_info("proxies: fitted " + std::to_string(obtained->rig.spheres.size()) + " spheres to " + model_file.string());
+    log_info("proxies: fitted " + std::to_string(obtained->rig.spheres.size()) + " spheres to " + source.model_file.string() +
+             (obtained->file.empty() ? std::string(" (kept in memory)") : " (written to " + obtained->file.string() + ")"));
   return std::move(obtained->rig);
 }
 
@@ -120,7 +130,8 @@ Result<proxies::ProxyRig> obtain_rig(const std::filesystem::path& model_file, co
                                      const anim::Character& character, bool write_cache) {
   auto hash = proxies::hash_file(model_file);
   if (!hash) return hash.error();
-  return obtain_rig(model_file, *hash, rig_file, character, write_cache);
+  return obtain_rig(RigSource{.model_file = model_file, .model_hash = *hash, .rig_file = rig_file, .write_cache = write_cache},
+                    character);
 }
 
 Result<std::unique_ptr<World>> World::load(const scene::Scene& scene, const WorldOptions& options) {

@@ -357,7 +357,14 @@ TEST(ImportValidation, ImageSizeLimitAndBadImage) {
   limits.max_image_pixels = 0;
   expect_refused(b.glb_bytes(), {"image 0: image size 1x1 exceeds the limit"}, limits);
   j["bufferViews"][static_cast<std::size_t>(view)]["byteLength"] = 8;  // PNG signature only
-  expect_refused(b.glb_bytes(), {"image 0: not a PNG or JPEG image"});
+  {
+    // A texture that does not decode falls back to the base color factor (a warning), as glTF
+    // viewers do; size limits still refuse the model.
+    auto fallback = import_gltf_bytes(b.glb_bytes(), "test.gltf", {});
+    ASSERT_TRUE(fallback.ok()) << fallback.message();
+    EXPECT_EQ(fallback->materials[0].base_color_image, -1);
+    EXPECT_TRUE(fallback->images[0].rgba.empty());
+  }
   j["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["index"] = 4;
   expect_refused(b.glb_bytes(), {"material 0: baseColorTexture 4 out of range (1 textures)"});
 }

@@ -26,7 +26,7 @@ sbatch --wait --array=0-1 --output="$work/regress_%a.log" "$source/scripts/slurm
 
 fail=0
 diff -r "$work/record_single" "$work/record_sharded" || { echo "FAIL: sharded record differs"; fail=1; }
-[ "$(ls "$work/record_single" | wc -l)" -eq 4 ] || { echo "FAIL: expected 4 frames"; fail=1; }
+[ "$(ls "$work/record_single"/frame_*.png | wc -l)" -eq 4 ] || { echo "FAIL: expected 4 frames"; fail=1; }
 for f in results.json junit.xml report.html; do
   cmp "$work/regress_single/$f" "$work/regress/merged/$f" || { echo "FAIL: merged $f differs"; fail=1; }
 done

@@ -86,7 +86,6 @@ const Case kCases[] = {
     {R"({"static_meshes": [{"model": "m.glb", "transform": {"scale": -2}}]})", "{}", "static_meshes[0].transform.scale: must be > 0"},
     // Cameras.
     {R"({"camera": {"type": "dolly"}})", "{}", "camera.type: unknown value \"dolly\""},
-    {R"({"camera": {"type": null}})", "{}", "camera.type: required field is missing"},
     {R"({"camera": {"fov_degrees": 0}})", "{}", "camera.fov_degrees: must be in [1, 179]"},
     {R"({"camera": {"fov_degrees": 180}})", "{}", "camera.fov_degrees: must be in [1, 179]"},
     {R"({"camera": {"near": 0}})", "{}", "camera.near: must be > 0"},
@@ -167,6 +166,16 @@ TEST(SceneValidation, EachRuleNamesTheField) {
     EXPECT_EQ(scene.message().rfind(expected, 0), 0u)
         << "message:  " << scene.message() << "\nexpected: " << expected << "\nscene:    " << text;
   }
+}
+
+// README "Scene files": a camera without "type" is a fixed camera.
+TEST(SceneValidation, ACameraWithoutTypeIsFixed) {
+  Result<Scene> scene = parse_scene(R"({"schema_version": 1, "camera": {"position": [0, 2, 6], "fov_degrees": 30}})", "scene.json");
+  ASSERT_TRUE(scene.ok()) << scene.message();
+  const auto* fixed = std::get_if<FixedCamera>(&scene->camera.kind);
+  ASSERT_NE(fixed, nullptr);
+  EXPECT_EQ(fixed->position, glm::vec3(0.0f, 2.0f, 6.0f));
+  EXPECT_EQ(fixed->fov_degrees, 30.0f);
 }
 
 TEST(SceneValidation, DuplicateKeysAreRefused) {
