@@ -34,9 +34,16 @@ Result<std::vector<DeviceReport>> list_devices() {
 
 Result<std::unique_ptr<Context>> Context::create(const ContextOptions& options) {
   std::unique_ptr<Context> context(new Context());
-  auto instance = Instance::create(resolve_validation(options.validation));
+  std::vector<std::string> instance_extensions = options.instance_extensions;
+  if (options.create_surface) instance_extensions.push_back(VK_KHR_SURFACE_EXTENSION_NAME);
+  auto instance = Instance::create(resolve_validation(options.validation), instance_extensions);
   if (!instance) return instance.error();
   context->instance_ = std::move(*instance);
+  if (options.create_surface) {
+    auto surface = options.create_surface(context->instance());
+    if (!surface) return surface.error();
+    context->surface_ = *surface;
+  }
 
   auto devices = physical_devices(context->instance());
   if (!devices) return devices.error();
@@ -61,7 +68,10 @@ Result<std::unique_ptr<Context>> Context::create(const ContextOptions& options) 
   std::vector<VkQueueFamilyProperties> families(family_count);
   vkGetPhysicalDeviceQueueFamilyProperties(context->physical_device_, &family_count, families.data());
   for (std::uint32_t i = 0; i < family_count; ++i) {
-    if ((families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) && (families[i].queueFlags & VK_QUEUE_COMPUTE_BIT)) {
+    VkBool32 presents = VK_TRUE;
+    if (context->surface_ != VK_NULL_HANDLE)
+      vkGetPhysicalDeviceSurfaceSupportKHR(context->physical_device_, i, context->surface_, &presents);
+    if ((families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) && (families[i].queueFlags & VK_QUEUE_COMPUTE_BIT) && presents) {
       context->queue_family_ = i;
       break;
     }
@@ -80,14 +90,15 @@ Result<std::unique_ptr<Context>> Context::create(const ContextOptions& options) 
   features12.pNext = &features13;
   VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
   features.pNext = &features12;
-  const char* extensions[] = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
+  std::vector<const char*> extensions = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
+  for (const auto& name : options.device_extensions) extensions.push_back(name.c_str());
 
   VkDeviceCreateInfo device_info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
   device_info.pNext = &features;
   device_info.queueCreateInfoCount = 1;
   device_info.pQueueCreateInfos = &queue_info;
-  device_info.enabledExtensionCount = 1;
-  device_info.ppEnabledExtensionNames = extensions;
+  device_info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
+  device_info.ppEnabledExtensionNames = extensions.data();
   PROXYGI_VK_TRY(vkCreateDevice(context->physical_device_, &device_info, nullptr, &context->device_));
   vkGetDeviceQueue(context->device_, context->queue_family_, 0, &context->queue_);
 
@@ -114,6 +125,7 @@ Context::~Context() {
     if (command_pool_ != VK_NULL_HANDLE) vkDestroyCommandPool(device_, command_pool_, nullptr);
     vkDestroyDevice(device_, nullptr);
   }
+  if (surface_ != VK_NULL_HANDLE) vkDestroySurfaceKHR(instance_->handle(), surface_, nullptr);
 }
 
 Status Context::submit_and_wait(const std::function<void(VkCommandBuffer)>& record) {

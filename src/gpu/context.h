@@ -25,6 +25,11 @@ namespace proxygi::gpu {
 struct ContextOptions {
   std::string device_request;  // name substring or index; empty: $PROXYGI_DEVICE, then automatic
   Validation validation = Validation::build_default;
+  std::vector<std::string> instance_extensions;  // e.g. glfwGetRequiredInstanceExtensions()
+  std::vector<std::string> device_extensions;    // e.g. VK_KHR_swapchain
+  // Makes the surface to present to (e.g. with glfwCreateWindowSurface); empty: headless. The
+  // surface belongs to the Context (destroyed after the device, before the instance).
+  std::function<Result<VkSurfaceKHR>(VkInstance)> create_surface;
 };
 
 class Context {
@@ -35,6 +40,7 @@ class Context {
   Context& operator=(const Context&) = delete;
 
   VkInstance instance() const { return instance_->handle(); }
+  VkSurfaceKHR surface() const { return surface_; }  // VK_NULL_HANDLE when headless
   VkPhysicalDevice physical_device() const { return physical_device_; }
   VkDevice device() const { return device_; }
   VkQueue queue() const { return queue_; }
@@ -86,6 +92,7 @@ class Context {
  private:
   Context() = default;
   std::unique_ptr<Instance> instance_;
+  VkSurfaceKHR surface_ = VK_NULL_HANDLE;
   VkPhysicalDevice physical_device_ = VK_NULL_HANDLE;
   VkDevice device_ = VK_NULL_HANDLE;
   VkQueue queue_ = VK_NULL_HANDLE;

@@ -56,7 +56,7 @@ std::vector<std::string> ValidationLog::messages() const {
   return messages_;
 }
 
-Result<std::unique_ptr<Instance>> Instance::create(bool validation) {
+Result<std::unique_ptr<Instance>> Instance::create(bool validation, const std::vector<std::string>& extra) {
   if (validation && !layer_available(kValidationLayer))
     return make_error(std::string("validation requested but ") + kValidationLayer +
                       " is not installed (Debian package vulkan-validationlayers)");
@@ -81,6 +81,7 @@ Result<std::unique_ptr<Instance>> Instance::create(bool validation) {
     layers.push_back(kValidationLayer);
     extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
   }
+  for (const auto& name : extra) extensions.push_back(name.c_str());
 
   VkInstanceCreateInfo create{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
   create.pApplicationInfo = &application;

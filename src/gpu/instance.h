@@ -35,7 +35,8 @@ class Instance {
  public:
   // Creates the instance; with validation the Khronos layer must be installed
   // (Debian: vulkan-validationlayers), else this fails naming the package.
-  static Result<std::unique_ptr<Instance>> create(bool validation);
+  // `extensions` are enabled beside VK_EXT_debug_utils (a window system's surface extensions).
+  static Result<std::unique_ptr<Instance>> create(bool validation, const std::vector<std::string>& extensions = {});
   ~Instance();
   Instance(const Instance&) = delete;
   Instance& operator=(const Instance&) = delete;
