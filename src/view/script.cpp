@@ -117,9 +117,15 @@ Result<Script> load_script(const std::filesystem::path& file) {
 std::vector<Event> ScriptPlayer::due(double now_s) {
   std::vector<Event> events;
   // A small tolerance: event times written as frame multiples land on the frame they name.
-  while (next_ < script_.events.size() && script_.events[next_].time_s <= now_s + 1e-9)
+  while (has_due(now_s)) {
     events.push_back(script_.events[next_++].event);
+    if (std::holds_alternative<ScreenshotEvent>(events.back())) break;
+  }
   return events;
+}
+
+bool ScriptPlayer::has_due(double now_s) const {
+  return next_ < script_.events.size() && script_.events[next_].time_s <= now_s + 1e-9;
 }
 
 }  // namespace proxygi::view

@@ -13,8 +13,8 @@
 //      {"t": 2.5, "resize": [320, 200]}, {"t": 3, "minimize": true}, {"t": 3.5, "restore": true},
 //      {"t": 4.0, "quit": true}]}
 //
-// Script time advances by step_s per rendered frame and stands still while a scene loads, so
-// a run is deterministic. Events at the same time keep their order. The script ends (and the
+// Script time advances by step_s per rendered frame and stands still while a scene loads or
+// while events at the current time remain (after a screenshot), so a run is deterministic. Events at the same time keep their order. The script ends (and the
 // viewer quits) after its last event unless that event keeps it open ("quit": false is an error).
 #include <filesystem>
 #include <optional>
@@ -44,8 +44,11 @@ Result<Script> load_script(const std::filesystem::path& file);
 class ScriptPlayer {
  public:
   explicit ScriptPlayer(Script script) : script_(std::move(script)) {}
-  // The events due at script time `now_s`, in order.
+  // The events due at script time `now_s`, in order, up to and including the first screenshot:
+  // a screenshot shows the frame as the events before it left it, and the events after it
+  // (even at the same time) apply from the next frame on.
   std::vector<Event> due(double now_s);
+  bool has_due(double now_s) const;
   bool finished() const { return next_ >= script_.events.size(); }
   const Script& script() const { return script_; }
 

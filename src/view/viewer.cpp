@@ -132,7 +132,7 @@ void Viewer::dispatch(const Event& event) {
   } else if (const auto* open = std::get_if<OpenFileEvent>(&event)) {
     loader_.open(open->path, world_ ? &world_->scene() : nullptr);
   } else if (const auto* shot = std::get_if<ScreenshotEvent>(&event)) {
-    screenshot_ = *shot;
+    screenshots_.push_back(*shot);
   } else if (const auto* save = std::get_if<SaveSceneEvent>(&event)) {
     if (Status s = save_scene(save->path); !s) core_->state().message = s.message();
   } else if (const auto* resize = std::get_if<ResizeEvent>(&event)) {
@@ -163,7 +163,7 @@ Status Viewer::run() {
     if (Status s = frame(); !s) return s;
     ++frames_;
     if (options_.max_frames > 0 && frames_ >= options_.max_frames) break;
-    if (script_ && script_->finished() && !loader_.busy() && !screenshot_) break;
+    if (script_ && script_->finished() && !loader_.busy() && screenshots_.empty()) break;
   }
   if (context_) vkDeviceWaitIdle(context_->device());
   if (Status s = write_state(); !s) return s;

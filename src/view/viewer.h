@@ -4,6 +4,7 @@
 // world state, adaptive resolution, render, UI, screenshot, present) and viewer_files.cpp
 // (scene saving, screenshots, the state file for tests).
 #include <chrono>
+#include <deque>
 #include <memory>
 #include <optional>
 #include <string>
@@ -71,8 +72,9 @@ class Viewer {
 
   std::optional<ScriptPlayer> script_;
   double script_clock_s_ = 0.0;
+  bool script_started_ = false;
   double step_s_ = 1.0 / 24.0;
-  std::optional<ScreenshotEvent> screenshot_;
+  std::deque<ScreenshotEvent> screenshots_;  // one per frame, oldest first
   int screenshot_count_ = 0;
   bool quit_ = false;
   bool adaptive_ = true;

@@ -73,7 +73,8 @@ struct ViewerState {
   FreeCamera camera;
   Toggles toggles;
   settings::RenderSettings settings;
-  std::string message;  // last error or notice, shown in the window
+  std::string message;  // the last error (a file that failed to open, a bad setting), shown until dismissed
+  std::string notice;   // the last notice (screenshot written, scene saved)
 };
 
 class ViewerCore {

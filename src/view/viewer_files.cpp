@@ -50,7 +50,7 @@ Status Viewer::save_scene(const std::string& path) {
   out.output.width = int(display_width_);
   out.output.height = int(display_height_);
   if (Status s = scene::save_scene(out, path); !s) return s;
-  core_->state().message = "saved " + path;
+  core_->state().notice = "saved " + path;
   return {};
 }
 
@@ -68,7 +68,7 @@ Status Viewer::write_screenshot(const std::vector<std::uint8_t>& rgba, std::uint
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), error);
   if (!options_.write_png) return make_error("screenshot: no PNG writer");
   if (Status s = options_.write_png(file, rgba, int(width), int(height)); !s) return s;
-  if (core_) core_->state().message = "screenshot " + file.string();
+  if (core_) core_->state().notice = "screenshot " + file.string();
   std::fprintf(stderr, "view: wrote %s\n", file.string().c_str());
   return {};
 }
@@ -90,6 +90,7 @@ Status Viewer::write_state() const {
                     {"target", {camera.target.x, camera.target.y, camera.target.z}}};
   for (const settings::Field& field : settings::fields()) json["settings"][std::string(field.key)] = field.get(state.settings);
   json["message"] = state.message;
+  json["notice"] = state.notice;
   json["frames"] = frames_;
   json["fps_mean"] = times_.mean() > 0.0 ? 1000.0 / times_.mean() : 0.0;
   json["frame_ms"] = {{"mean", times_.mean()}, {"min", times_.min()}, {"max", times_.max()}};

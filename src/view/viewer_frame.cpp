@@ -129,7 +129,8 @@ HudInfo Viewer::hud_info() const {
 
 // The UI over the frame in `target`, the screenshot when one is due, then (window) present.
 Status Viewer::finish_ui(const TargetImage& target, VkSemaphore signal, VkImageLayout final_layout) {
-  const bool with_ui = options_.show_ui && core_ && core_->state().toggles.ui && !(screenshot_ && !screenshot_->with_ui);
+  const bool with_ui = options_.show_ui && core_ && core_->state().toggles.ui &&
+                       !(!screenshots_.empty() && !screenshots_.front().with_ui);
   ImGuiIO& io = ImGui::GetIO();
   if (window_) {
     ImGui_ImplGlfw_NewFrame();
@@ -147,15 +148,15 @@ Status Viewer::finish_ui(const TargetImage& target, VkSemaphore signal, VkImageL
   }
   ImGui::Render();
   if (Status s = ui_pass_->submit(target, with_ui ? ImGui::GetDrawData() : nullptr, signal); !s) return s;
-  if (screenshot_) {
+  if (!screenshots_.empty()) {
     if (Status s = ui_pass_->wait(); !s) return s;
     auto rgba = read_target(*context_, target, final_layout);
     if (!rgba) return rgba.error();
-    if (Status s = write_screenshot(*rgba, target.width, target.height, screenshot_->path); !s)
+    if (Status s = write_screenshot(*rgba, target.width, target.height, screenshots_.front().path); !s)
       core_->state().message = s.message();
-    screenshot_.reset();
+    screenshots_.pop_front();
   }
-  if (requests.screenshot) screenshot_ = ScreenshotEvent{"", true};
+  if (requests.screenshot) screenshots_.push_back(ScreenshotEvent{"", true});
   if (requests.time_passes) want_pass_timing_ = true;
   if (requests.open) loader_.open(*requests.open, world_ ? &world_->scene() : nullptr);
   if (requests.save)
@@ -175,23 +176,33 @@ Status Viewer::frame() {
   if (frames_ > 0) times_.add(frame_ms), adapt_resolution(frame_ms);
 
   std::vector<Event> events = window_ ? window_->poll() : std::vector<Event>{};
-  if (script_ && !loader_.busy()) {
-    for (Event& event : script_->due(script_clock_s_)) events.push_back(std::move(event));
+  if (auto loaded = loader_.poll())
+    if (Status s = adopt(std::move(*loaded)); !s) return s;
+  if (core_)
+    step_s_ = script_ && script_->script().step_s ? *script_->script().step_s : 1.0 / core_->state().playback.fps;
+  if (script_) {
+    // The script's clock stands still while a scene loads. Frame k shows script time k·step,
+    // after the events due by then: the clock advances first, then its events apply.
+    if (loader_.busy()) {
+      for (const Event& event : events) dispatch(event);
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      return {};
+    }
+    if (!screenshots_.empty() || script_->has_due(script_clock_s_)) {
+      // A screenshot takes its frame, and the events after it at the same time apply next.
+    } else if (script_started_) {
+      core_->advance(step_s_);
+      script_clock_s_ += step_s_;
+    }
+    script_started_ = true;
+    if (screenshots_.empty())
+      for (Event& event : script_->due(script_clock_s_)) events.push_back(std::move(event));
+  } else if (core_) {
+    core_->advance(wall_dt);
   }
   for (const Event& event : events) dispatch(event);
   if (core_)
     for (const Event& event : core_->take_requests()) dispatch(event);
-  if (auto loaded = loader_.poll())
-    if (Status s = adopt(std::move(*loaded)); !s) return s;
-  if (script_ && loader_.busy()) {  // the script's clock waits for the scene
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    return {};
-  }
-  if (core_) {
-    step_s_ = script_ && script_->script().step_s ? *script_->script().step_s : 1.0 / core_->state().playback.fps;
-    core_->advance(script_ ? step_s_ : wall_dt);
-  }
-  if (script_) script_clock_s_ += step_s_;
 
   if (!window_) {
     TargetImage target{offscreen_->handle(), offscreen_->view(), offscreen_->format(), offscreen_->width(),

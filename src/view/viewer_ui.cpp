@@ -234,10 +234,11 @@ UiRequests draw_ui(UiContext& ui) {
     ImGui::Checkbox("grid (G)", &state.toggles.grid);
   }
   ImGui::End();
-  if (!ui.hud.loading.empty() || !state.message.empty()) {
+  if (!ui.hud.loading.empty() || !state.message.empty() || !state.notice.empty()) {
     ImGui::SetNextWindowPos({display.x * 0.5f, 8}, ImGuiCond_Always, {0.5f, 0.0f});
     ImGui::Begin("status", nullptr, ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_AlwaysAutoResize);
     if (!ui.hud.loading.empty()) ImGui::TextUnformatted(ui.hud.loading.c_str());
+    if (!state.notice.empty()) ImGui::TextUnformatted(state.notice.c_str());
     if (!state.message.empty()) {
       ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%s", state.message.c_str());
       if (ImGui::SmallButton("dismiss")) state.message.clear();
