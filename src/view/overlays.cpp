@@ -38,7 +38,7 @@ ImU32 bone_color(const std::string& bone) {
 }
 
 void draw_grid(ImDrawList& list, const Projector& projector) {
-  const ImU32 color = IM_COL32(255, 255, 255, 90);
+  const ImU32 color = IM_COL32(60, 60, 70, 140);  // dark: the default ground is light gray
   constexpr int kHalf = 5;  // ±5 m, lines every metre
   for (int i = -kHalf; i <= kHalf; ++i) {
     for (int axis = 0; axis < 2; ++axis) {

@@ -22,6 +22,7 @@ Viewer::Viewer(const ViewerOptions& options) : options_(options), loader_(option
 
 Viewer::~Viewer() {
   if (context_) vkDeviceWaitIdle(context_->device());
+  if (renderer_) (void)finish_all();
   renderer_.reset();
   ui_pass_.reset();
   swapchain_.reset();
@@ -86,9 +87,12 @@ Status Viewer::init() {
 }
 
 Status Viewer::make_renderer() {
+  if (renderer_)
+    if (Status s = finish_all(); !s) return s;
+  in_flight_.clear();
   renderer_.reset();
   auto renderer = gpu::SceneRenderer::create(*context_, world_, core_->state().settings, internal_width_,
-                                             internal_height_);
+                                             internal_height_, std::uint32_t(kFramesInFlight));
   if (!renderer) return renderer.error();
   renderer_ = std::move(*renderer);
   applied_settings_ = core_->state().settings;

@@ -24,6 +24,9 @@ struct ImGuiContext;
 
 namespace proxygi::view {
 
+// Ring slots of the scene renderer: one frame prepared while the previous one renders.
+inline constexpr std::size_t kFramesInFlight = 2;
+
 class Viewer {
  public:
   explicit Viewer(const ViewerOptions& options);
@@ -39,6 +42,8 @@ class Viewer {
   // viewer_frame.cpp
   Status frame();
   Status render_into(const TargetImage& target);
+  Status finish_oldest();  // waits for the oldest frame in flight
+  Status finish_all();
   void evaluate_world();
   void adapt_resolution(double frame_ms);
   Status finish_ui(const TargetImage& target, VkSemaphore signal, VkImageLayout final_layout);
@@ -63,6 +68,7 @@ class Viewer {
   std::string name_;  // what is shown
   std::shared_ptr<const world::World> world_;
   std::unique_ptr<gpu::SceneRenderer> renderer_;
+  std::deque<gpu::FrameTicket> in_flight_;  // begun, not yet finished (oldest first)
   scene::Scene scene_;  // editable copy of the world's scene (clips, environment)
   std::optional<ViewerCore> core_;
   world::WorldState state_;

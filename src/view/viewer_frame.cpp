@@ -69,6 +69,7 @@ Status Viewer::render_into(const TargetImage& target) {
   const std::uint32_t width = std::max(16u, std::uint32_t(std::lround(target.width * scale_)));
   const std::uint32_t height = std::max(16u, std::uint32_t(std::lround(target.height * scale_)));
   if (core_->state().settings != applied_settings_ || width != internal_width_ || height != internal_height_) {
+    if (Status s = finish_all(); !s) return s;
     if (Status s = renderer_->apply_settings(core_->state().settings, width, height); !s) {
       core_->state().message = "settings: " + s.message();
       core_->state().settings = applied_settings_;
@@ -83,11 +84,15 @@ Status Viewer::render_into(const TargetImage& target) {
   request.frame = core_->state().playback.frame();
   request.output = gpu::FrameOutput::into({target.image, target.format, target.width, target.height,
                                            VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
+  // Frames in flight: the next frame is prepared on the CPU while the device still renders the
+  // previous one; only when every ring slot is busy does the loop wait for the oldest.
+  while (in_flight_.size() >= kFramesInFlight)
+    if (Status s = finish_oldest(); !s) return s;
   auto ticket = renderer_->begin(request);
   if (!ticket) return ticket.error();
-  auto finished = renderer_->finish(*ticket);
-  if (!finished) return finished.error();
+  in_flight_.push_back(*ticket);
   if (!first_frame_logged_) {
+    if (Status s = finish_all(); !s) return s;  // measured to the frame's completion
     first_frame_logged_ = true;
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - options_.started).count();
     std::fprintf(stderr, "view: first frame of %s after %.2f s\n", name_.c_str(), seconds);
@@ -96,6 +101,7 @@ Status Viewer::render_into(const TargetImage& target) {
       (want_pass_timing_ || std::chrono::steady_clock::now() - last_pass_timing_ > std::chrono::duration<double>(kPassTimingPeriodS))) {
     want_pass_timing_ = false;
     last_pass_timing_ = std::chrono::steady_clock::now();
+    if (Status s = finish_all(); !s) return s;  // pass timing needs an idle ring
     if (auto timings = renderer_->time_passes(core_->state().playback.frame())) {
       passes_.clear();
       passes_.push_back({"prepare (CPU)", timings->cpu_prepare_ms});
@@ -103,6 +109,20 @@ Status Viewer::render_into(const TargetImage& target) {
         if (timings->milliseconds[p] > 0.0) passes_.push_back({gpu::frame_pass_name(gpu::FramePass(p)), timings->milliseconds[p]});
     }
   }
+  return {};
+}
+
+Status Viewer::finish_oldest() {
+  const gpu::FrameTicket ticket = in_flight_.front();
+  in_flight_.pop_front();
+  auto finished = renderer_->finish(ticket);
+  if (!finished) return finished.error();
+  return {};
+}
+
+Status Viewer::finish_all() {
+  while (!in_flight_.empty())
+    if (Status s = finish_oldest(); !s) return s;
   return {};
 }
 

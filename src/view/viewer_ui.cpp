@@ -32,6 +32,8 @@ std::vector<float> FrameTimes::ordered() const {
 
 namespace {
 
+constexpr float kSettingsWidth = 352.0f;
+
 constexpr const char* kKeyMap[][2] = {
     {"orbit", "left drag (middle drag too)"},   {"pan", "right drag, Shift+left, Shift+middle"},
     {"zoom", "wheel; Ctrl+middle drag"},        {"frame all", "Home (also F)"},
@@ -50,7 +52,7 @@ void draw_hud(UiContext& ui, UiRequests& requests) {
   ImGui::SetNextWindowBgAlpha(0.6f);
   ImGui::Begin("HUD", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
   const double mean = ui.times.mean();
-  ImGui::Text("%.1f fps   frame %.1f ms (min %.1f, max %.1f; last %zu)", mean > 0 ? 1000.0 / mean : 0.0, mean,
+  ImGui::Text("%.1f fps   frame %.1f ms (min %.1f, max %.1f over %zu frames)", mean > 0 ? 1000.0 / mean : 0.0, mean,
               ui.times.min(), ui.times.max(), ui.times.size());
   const auto plot = ui.times.ordered();
   if (!plot.empty()) ImGui::PlotLines("##times", plot.data(), int(plot.size()), 0, nullptr, 0.0f, float(ui.times.max() * 1.2), {260, 40});
@@ -73,7 +75,7 @@ void draw_playback(UiContext& ui, UiRequests& requests) {
   Playback& playback = core.state().playback;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos({8, display.y - 92}, ImGuiCond_Always);
-  ImGui::SetNextWindowSize({std::max(display.x - 16, 200.0f), 84}, ImGuiCond_Always);
+  ImGui::SetNextWindowSize({std::max(display.x - kSettingsWidth - 24, 200.0f), 84}, ImGuiCond_Always);
   ImGui::SetNextWindowBgAlpha(0.6f);
   ImGui::Begin("Playback", nullptr, ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize);
   if (ImGui::Button(playback.playing ? "Pause" : "Play")) playback.playing = !playback.playing;
@@ -222,8 +224,8 @@ UiRequests draw_ui(UiContext& ui) {
   if (state.toggles.hud) draw_hud(ui, requests);
   draw_playback(ui, requests);
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos({display.x - 360, 8}, ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize({352, 0}, ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowPos({display.x - kSettingsWidth - 8, 8}, ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize({kSettingsWidth, std::max(display.y - 16, 100.0f)}, ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowBgAlpha(0.7f);
   ImGui::Begin("Settings");
   if (ImGui::CollapsingHeader("render", ImGuiTreeNodeFlags_DefaultOpen)) draw_settings(ui);
@@ -237,12 +239,14 @@ UiRequests draw_ui(UiContext& ui) {
   if (!ui.hud.loading.empty() || !state.message.empty() || !state.notice.empty()) {
     ImGui::SetNextWindowPos({display.x * 0.5f, 8}, ImGuiCond_Always, {0.5f, 0.0f});
     ImGui::Begin("status", nullptr, ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_AlwaysAutoResize);
+    ImGui::PushTextWrapPos(std::max(display.x * 0.6f, 200.0f));
     if (!ui.hud.loading.empty()) ImGui::TextUnformatted(ui.hud.loading.c_str());
     if (!state.notice.empty()) ImGui::TextUnformatted(state.notice.c_str());
     if (!state.message.empty()) {
       ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%s", state.message.c_str());
       if (ImGui::SmallButton("dismiss")) state.message.clear();
     }
+    ImGui::PopTextWrapPos();
     ImGui::End();
   }
   if (state.toggles.help) draw_help();

@@ -70,22 +70,24 @@ inline int max_code_difference(const std::vector<std::uint8_t>& a, const std::ve
   return worst;
 }
 
+// Writes a captured screenshot as a PNG (to look at, or for docs/).
+inline void write_shot(const Shot& shot, const std::vector<std::uint8_t>& rgba, const std::filesystem::path& file) {
+  image::ImageF out;
+  out.width = shot.width, out.height = shot.height;
+  out.pixels.resize(std::size_t(shot.width) * shot.height);
+  for (std::size_t i = 0; i < out.pixels.size(); ++i)
+    for (int c = 0; c < 4; ++c) out.pixels[i][c] = image::srgb8_to_linear(rgba[i * 4 + c]);
+  (void)image::write_png(file, out);
+}
+
 // Within one sRGB code of `expected`; on failure both are written to output_dir(test) to look at.
 inline void expect_within_one_code(const Shot& shot, const std::vector<std::uint8_t>& expected, const std::string& test,
                                    const std::string& name) {
   const int worst = max_code_difference(shot.rgba, expected);
   EXPECT_LE(worst, 1) << name << ": the viewer's frame differs from record's";
   if (worst <= 1 || shot.rgba.size() != expected.size()) return;
-  auto write = [&](const std::vector<std::uint8_t>& rgba, const std::string& file) {
-    image::ImageF out;
-    out.width = shot.width, out.height = shot.height;
-    out.pixels.resize(std::size_t(shot.width) * shot.height);
-    for (std::size_t i = 0; i < out.pixels.size(); ++i)
-      for (int c = 0; c < 4; ++c) out.pixels[i][c] = image::srgb8_to_linear(rgba[i * 4 + c]);
-    (void)image::write_png(output_dir(test) / file, out);
-  };
-  write(shot.rgba, name + ".viewer.png");
-  write(expected, name + ".record.png");
+  write_shot(shot, shot.rgba, output_dir(test) / (name + ".viewer.png"));
+  write_shot(shot, expected, output_dir(test) / (name + ".record.png"));
 }
 
 // `record`'s frame: a scene renderer over the scene at its output size, frame `frame`.
