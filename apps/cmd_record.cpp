@@ -17,6 +17,7 @@
 #include "gpu/scene_renderer.h"
 #include "run/frame_loop.h"
 #include "run/frame_plan.h"
+#include "run/task_queue.h"
 #include "scene/camera.h"
 #include "scene/scene_defaults.h"
 #include "scene/scene_parse.h"
@@ -63,21 +64,24 @@ struct RecordPlan {
 };
 
 // Renders plan.frames with the renderer's ring of frames in flight (run::render_frames): frame
-// t+1 is prepared and submitted before frame t's files are written. The HDR readback is skipped
-// when no EXR is written.
+// t+1 is prepared and submitted before frame t is handed to the encoder threads, which write
+// its files while the GPU renders on. The HDR readback is skipped when no EXR is written.
 Status render_in_flight(gpu::SceneRenderer& renderer, const RecordPlan& plan, RecordProgress& progress) {
   const scene::Output& output = renderer.scene().output;
   run::FrameLoopOptions options;
   options.output = gpu::FrameOutput::readback(plan.exr);
   options.stop = &g_interrupted;
-  return run::render_frames(renderer, plan.frames, options, [&](gpu::FinishedFrame& finished) -> Status {
-    if (Status s = write_frame_files(plan.dir, finished.frame, finished.ldr, finished.hdr, output.width,
-                                     output.height, plan.exr);
-        !s)
-      return s;
+  const std::size_t encoders = run::default_encoder_threads();
+  run::TaskQueue writer(encoders, 2 * encoders);  // a few frames queued at most: bounded memory
+  const Status rendered = run::render_frames(renderer, plan.frames, options, [&](gpu::FinishedFrame& finished) -> Status {
     progress.frame_rendered(finished.frame, finished.statistics.proxies, finished.statistics.cpu_prepare_ms);
-    return {};
+    return writer.push([&plan, &output, frame = finished.frame, ldr = std::move(finished.ldr),
+                        hdr = std::move(finished.hdr)]() {
+      return write_frame_files(plan.dir, frame, ldr, hdr, output.width, output.height, plan.exr);
+    });
   });
+  const Status written = writer.wait();
+  return !rendered ? rendered : written;
 }
 
 // --aov: one frame at a time, since the intermediate buffers hold only the latest frame.

@@ -1,9 +1,10 @@
 // proxygi reference SCENE --frame F --spp N -o OUT.exr [--mode direct|one-bounce|multi-bounce]
-//   [--lighting sh|full] [--width W --height H] [--seed S] [--threads T] [--accumulate]
+//   [--lighting sh|full] [--lighting-order N] [--width W --height H] [--seed S] [--threads T] [--accumulate]
 //   [--guided-filter [--filter-radius R]]
 // Path-traces one frame of a scene with Embree (the ground truth of the accuracy study) and
 // writes OUT.exr plus its feature and statistics files (ref/reference_render_io.h lists them).
 // SCENE is a scene file, or "default" / "crowd" for a built-in scene (a file by that name wins).
+// The scene is loaded and posed by world::World (the GPU renderer's rules), without proxy rigs.
 // Bad arguments or scenes exit 2, failures while rendering or writing exit 1.
 #include <cmath>
 #include <cstdio>
@@ -13,7 +14,7 @@
 #include "apps/commands.h"
 #include "image/image.h"
 #include "ref/embree_scene.h"
-#include "ref/embree_scene_load.h"
+#include "ref/scene_geometry.h"
 #include "ref/path_tracer.h"
 #include "ref/path_tracer_lighting.h"
 #include "ref/reference_render.h"
@@ -21,6 +22,8 @@
 #include "scene/camera.h"
 #include "scene/scene_defaults.h"
 #include "scene/scene_parse.h"
+#include "sh/basis.h"
+#include "world/world.h"
 
 namespace proxygi::app {
 namespace {
@@ -32,6 +35,7 @@ struct ReferenceArgs {
   std::string output;
   std::string mode = "one-bounce";
   std::string lighting = "sh";
+  int lighting_order = 0;  // 0: the scene's render.sh_order
   int width = 0;   // 0: the scene's output size
   int height = 0;
   std::uint32_t seed = 0;
@@ -71,6 +75,7 @@ int run_reference(const ReferenceArgs& args) {
   else if (args.mode == "one-bounce") settings.transport = ref::LightTransport::one_bounce;
   else settings.transport = ref::LightTransport::multi_bounce;
   const ref::LightingKind lighting_kind = args.lighting == "sh" ? ref::LightingKind::sh : ref::LightingKind::full;
+  const int lighting_order = args.lighting_order > 0 ? args.lighting_order : scene.render.sh_order;
 
   ref::ReferenceRecord record;
   record.scene = args.scene;
@@ -80,7 +85,7 @@ int run_reference(const ReferenceArgs& args) {
   record.height = height;
   record.transport = args.mode;
   record.lighting = args.lighting;
-  record.sh_order = scene.render.sh_order;
+  record.sh_order = lighting_order;
   record.seed = args.seed;
   record.guided_filter = args.guided_filter;
 
@@ -104,18 +109,21 @@ int run_reference(const ReferenceArgs& args) {
     record.rays = old->rays;
   }
 
-  auto assets = ref::load_scene_assets(scene, assets_dir());
-  if (!assets) return fail_bad_input(assets.message());
-  auto meshes = ref::pose_scene_meshes(scene, *assets, record.time_s);
+  auto world = world::World::load(scene, {.assets_dir = assets_dir(), .load_rigs = false});
+  if (!world) return fail_bad_input(world.message());
+  world::WorldState state;
+  if (Status evaluated = (*world)->evaluate(record.time_s, std::nullopt, state); !evaluated)
+    return fail_bad_input(evaluated.message());
+  auto meshes = ref::world_meshes(**world, state, ref::make_scene_geometry(**world));
   if (!meshes) return fail_bad_input(meshes.message());
   auto geometry = ref::EmbreeScene::build(std::move(*meshes));
   if (!geometry) return fail_runtime(geometry.message());
-  auto lighting = ref::EnvironmentLight::from_scene(scene, lighting_kind);
+  auto lighting = ref::EnvironmentLight::from_scene(scene, lighting_kind, lighting_order);
   if (!lighting) return fail_bad_input(lighting.message());
-  auto background = ref::EnvironmentLight::from_scene(scene, ref::LightingKind::full);
+  auto background = ref::EnvironmentLight::from_scene(scene, ref::LightingKind::full, lighting_order);
   if (!background) return fail_bad_input(background.message());
   const ref::PathTracer tracer(*geometry, *lighting, *background, settings);
-  const scene::CameraState camera = scene::evaluate_scene_camera(scene, record.time_s);
+  const scene::CameraState& camera = state.camera;
 
   std::fprintf(stderr, "reference: %s frame %d (t = %.3f s), %d triangles, %dx%d, %d spp (samples %u..%u), %s, %s lighting\n",
                args.scene.c_str(), args.frame, record.time_s, int(geometry->triangle_count()), width, height, args.spp,
@@ -184,10 +192,14 @@ void add_reference_command(CLI::App& app, CommandRunner& runner) {
       ->check(CLI::IsMember({"direct", "one-bounce", "multi-bounce"}))
       ->capture_default_str();
   command->add_option("--lighting", args->lighting,
-                      "sh: the environment band-limited to the scene's SH order and windowed, as the proxy "
+                      "sh: the environment band-limited to --lighting-order and windowed, as the proxy "
                       "method sees it; full: the environment itself (sun sampled with MIS)")
       ->check(CLI::IsMember({"sh", "full"}))
       ->capture_default_str();
+  command->add_option("--lighting-order", args->lighting_order,
+                      "SH order (bands) of the sh lighting, the reference's own band limit (default: the scene's "
+                      "render.sh_order)")
+      ->check(CLI::Range(sh::kMinOrder, sh::kMaxOrder));
   command->add_option("--width", args->width, "Image width (default: the scene's)")->check(CLI::Range(1, 16384));
   command->add_option("--height", args->height, "Image height (default: the scene's)")->check(CLI::Range(1, 16384));
   command->add_option("--seed", args->seed, "Random seed; the same seed gives the same image")->capture_default_str();

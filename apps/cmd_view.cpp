@@ -1,5 +1,5 @@
 // proxygi view [SCENE.json | MODEL.glb | MODEL.gltf | default | crowd] [--offscreen] [--script FILE.json]
-//              [--width W --height H] [--no-vsync] [--no-adaptive] [--no-ui] [--validation]
+//              [--width W --height H] [--no-vsync] [--no-adaptive] [--no-ui] [--play] [--validation]
 //              [--max-frames N] [--state-out FILE.json] [--device NAME|INDEX]
 // The interactive viewer (src/view): a window with the frame, its HUD and live settings, or an
 // offscreen image driven by a script. Screenshots go through the recorder's PNG writer.
@@ -7,7 +7,6 @@
 #include <memory>
 
 #include "apps/commands.h"
-#include "apps/record_output.h"
 #include "image/image.h"
 #include "view/viewer_app.h"
 
@@ -19,16 +18,11 @@ struct ViewArgs {
   std::string script;
   bool offscreen = false;
   int width = 1280, height = 720;
-  bool no_vsync = false, no_adaptive = false, no_ui = false, validation = false;
+  bool no_vsync = false, no_adaptive = false, no_ui = false, validation = false, play = false;
   int max_frames = 0;
   std::string state_out;
   std::string device;
 };
-
-// The recorder's writer: the renderer's sRGB bytes land in the PNG unchanged.
-Status write_png_bytes(const std::filesystem::path& file, std::span<const std::uint8_t> rgba, int width, int height) {
-  return image::write_png(file, ldr_to_linear(rgba, width, height));
-}
 
 int run_view(const ViewArgs& args, std::chrono::steady_clock::time_point started) {
   view::ViewerOptions options;
@@ -42,9 +36,10 @@ int run_view(const ViewArgs& args, std::chrono::steady_clock::time_point started
   options.validation = args.validation;
   options.adaptive_resolution = !args.no_adaptive;
   options.show_ui = !args.no_ui;
+  options.play = args.play;
   options.max_frames = args.max_frames;
   options.state_out = args.state_out;
-  options.write_png = write_png_bytes;
+  options.write_png = image::write_png_rgba8;  // the recorder's writer: the bytes as they are
   options.started = started;
   if (!args.script.empty()) {
     auto script = view::load_script(args.script);
@@ -72,6 +67,7 @@ void add_view_command(CLI::App& app, CommandRunner& runner) {
   command->add_flag("--no-vsync", args->no_vsync, "present with mailbox or immediate instead of FIFO");
   command->add_flag("--no-adaptive", args->no_adaptive, "never lower the internal resolution");
   command->add_flag("--no-ui", args->no_ui, "hide the UI (as F10)");
+  command->add_flag("--play", args->play, "start playing (as Space)");
   command->add_flag("--validation", args->validation, "Vulkan validation on; any message fails the run");
   command->add_option("--max-frames", args->max_frames, "quit after N frames")->check(CLI::NonNegativeNumber);
   command->add_option("--state-out", args->state_out, "write the final viewer state as JSON (tests)");

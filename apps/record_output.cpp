@@ -68,7 +68,7 @@ Status write_frame_files(const std::filesystem::path& dir, int frame, std::span<
   // EXR first: the PNG is what a quick look (and ffmpeg) sees, so it appears last.
   if (exr)
     if (Status s = image::write_exr(frame_file(dir, frame, "exr"), hdr); !s) return s;
-  return image::write_png(frame_file(dir, frame, "png"), ldr_to_linear(ldr, width, height));
+  return image::write_png_rgba8(frame_file(dir, frame, "png"), ldr, width, height);
 }
 
 void draw_sphere_outlines(image::ImageF& image, std::span<const render::Sphere> spheres,

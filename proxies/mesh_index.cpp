@@ -297,7 +297,7 @@ DistanceGrid build_distance_grid(const TriangleSoup& soup, const WindingIndex& w
   std::vector<std::uint8_t> votes(count, 0);
   for (int axis = 0; axis < 3; ++axis) {
     const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-    std::vector<int> line(std::size_t(dims[axis]));
+    std::vector<int> line(static_cast<std::size_t>(dims[axis]));
     for (int j = 0; j < dims[v]; ++j)
       for (int i = 0; i < dims[u]; ++i) {
         glm::ivec3 c(0);

@@ -150,7 +150,10 @@ Status write_rig(const std::filesystem::path& path, const ProxyRig& rig, const a
   return write_file_atomically(path, rig_to_json(rig, character));
 }
 
-Result<ProxyRig> parse_rig(std::string_view text, const std::string& file_name, const anim::Character& character) {
+namespace {
+
+Result<ProxyRig> parse_rig_document(std::string_view text, const std::string& file_name,
+                                    const anim::Character& character) {
   json root;
   try {
     root = json::parse(text);
@@ -263,6 +266,18 @@ Result<ProxyRig> parse_rig(std::string_view text, const std::string& file_name, 
     rig.spheres.push_back(s);
   }
   return rig;
+}
+
+}  // namespace
+
+Result<ProxyRig> parse_rig(std::string_view text, const std::string& file_name, const anim::Character& character) {
+  // nlohmann throws for what the checks above do not reach (a number too large for a double,
+  // found by fuzz_rig_parse): every such input is a clear error, never a crash.
+  try {
+    return parse_rig_document(text, file_name, character);
+  } catch (const json::exception& e) {
+    return make_error(file_name + ": invalid rig file (" + std::string(e.what()) + ")");
+  }
 }
 
 Result<ProxyRig> read_rig(const std::filesystem::path& path, const anim::Character& character) {

@@ -16,9 +16,10 @@ std::string requested_device(const ContextOptions& options) {
   return {};
 }
 
-Result<std::vector<DeviceReport>> reports_of(const std::vector<VkPhysicalDevice>& devices) {
+std::vector<DeviceReport> reports_of(const std::vector<VkPhysicalDevice>& devices, const DeviceNeeds& needs = {}) {
   std::vector<DeviceReport> reports;
-  for (std::size_t i = 0; i < devices.size(); ++i) reports.push_back(query_device(devices[i], static_cast<int>(i)));
+  for (std::size_t i = 0; i < devices.size(); ++i)
+    reports.push_back(query_device(devices[i], static_cast<int>(i), needs));
   return reports;
 }
 
@@ -34,27 +35,29 @@ Result<std::vector<DeviceReport>> list_devices() {
 
 Result<std::unique_ptr<Context>> Context::create(const ContextOptions& options) {
   std::unique_ptr<Context> context(new Context());
-  std::vector<std::string> instance_extensions = options.instance_extensions;
-  if (options.create_surface) instance_extensions.push_back(VK_KHR_SURFACE_EXTENSION_NAME);
-  auto instance = Instance::create(resolve_validation(options.validation), instance_extensions);
+  const auto instance_extension_names =
+      options.create_surface ? merge_extensions(options.instance_extensions, {VK_KHR_SURFACE_EXTENSION_NAME})
+                             : options.instance_extensions;
+  auto instance = Instance::create(resolve_validation(options.validation), instance_extension_names);
   if (!instance) return instance.error();
   context->instance_ = std::move(*instance);
+
   if (options.create_surface) {
     auto surface = options.create_surface(context->instance());
-    if (!surface) return surface.error();
+    if (!surface) return make_error("creating the Vulkan surface: " + surface.message());
+    if (*surface == VK_NULL_HANDLE) return make_error("creating the Vulkan surface: the factory returned no surface");
     context->surface_ = *surface;
   }
 
   auto devices = physical_devices(context->instance());
   if (!devices) return devices.error();
-  auto reports = reports_of(*devices);
-  if (!reports) return reports.error();
-  auto choice = choose_device(*reports, requested_device(options));
+  const auto reports = reports_of(*devices, {.surface = context->surface_, .extensions = options.device_extensions});
+  auto choice = choose_device(reports, requested_device(options));
   if (!choice) return choice.error();
 
   const auto chosen = static_cast<std::size_t>(choice->index);
   context->physical_device_ = (*devices)[chosen];
-  context->report_ = (*reports)[chosen];
+  context->report_ = reports[chosen];
   log_info("vulkan: using " + context->report_.name + " (" + context->report_.driver + "; " + choice->reason + ")");
   for (const auto& rejection : choice->rejections) log_info("vulkan: not using " + rejection);
 
@@ -63,19 +66,7 @@ Result<std::unique_ptr<Context>> Context::create(const ContextOptions& options) 
   context->limits_ = properties.limits;
   vkGetPhysicalDeviceMemoryProperties(context->physical_device_, &context->memory_properties_);
 
-  std::uint32_t family_count = 0;
-  vkGetPhysicalDeviceQueueFamilyProperties(context->physical_device_, &family_count, nullptr);
-  std::vector<VkQueueFamilyProperties> families(family_count);
-  vkGetPhysicalDeviceQueueFamilyProperties(context->physical_device_, &family_count, families.data());
-  for (std::uint32_t i = 0; i < family_count; ++i) {
-    VkBool32 presents = VK_TRUE;
-    if (context->surface_ != VK_NULL_HANDLE)
-      vkGetPhysicalDeviceSurfaceSupportKHR(context->physical_device_, i, context->surface_, &presents);
-    if ((families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) && (families[i].queueFlags & VK_QUEUE_COMPUTE_BIT) && presents) {
-      context->queue_family_ = i;
-      break;
-    }
-  }
+  context->queue_family_ = static_cast<std::uint32_t>(context->report_.queue_family);  // >= 0: a requirement
 
   const float priority = 1.0f;
   VkDeviceQueueCreateInfo queue_info{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
@@ -90,8 +81,9 @@ Result<std::unique_ptr<Context>> Context::create(const ContextOptions& options) 
   features12.pNext = &features13;
   VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
   features.pNext = &features12;
-  std::vector<const char*> extensions = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
-  for (const auto& name : options.device_extensions) extensions.push_back(name.c_str());
+  const auto extension_names = merge_extensions({VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME}, options.device_extensions);
+  std::vector<const char*> extensions;
+  for (const auto& name : extension_names) extensions.push_back(name.c_str());
 
   VkDeviceCreateInfo device_info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
   device_info.pNext = &features;
@@ -125,7 +117,7 @@ Context::~Context() {
     if (command_pool_ != VK_NULL_HANDLE) vkDestroyCommandPool(device_, command_pool_, nullptr);
     vkDestroyDevice(device_, nullptr);
   }
-  if (surface_ != VK_NULL_HANDLE) vkDestroySurfaceKHR(instance_->handle(), surface_, nullptr);
+  if (surface_ != VK_NULL_HANDLE) vkDestroySurfaceKHR(instance(), surface_, nullptr);
 }
 
 Status Context::submit_and_wait(const std::function<void(VkCommandBuffer)>& record) {

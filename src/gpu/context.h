@@ -1,14 +1,36 @@
 #pragma once
-// Context: a headless Vulkan device ready for proxygi's passes. It owns the instance (with the
-// validation layer when asked), the chosen physical device, one queue that does graphics,
-// compute and transfer, and a command pool for one-shot submissions.
+// Context: a Vulkan device ready for proxygi's passes, headless by default or presenting to a
+// surface. It owns the instance (with the validation layer when asked), the surface when one is
+// made, the chosen physical device, one queue that does graphics, compute and transfer (and
+// presents to the surface, when there is one), and a command pool for one-shot submissions.
 //
 //   auto context = gpu::Context::create({.device_request = "llvmpipe", .validation = Validation::on});
 //   if (!context) return context.error();
 //   (*context)->submit_and_wait([&](VkCommandBuffer commands) { ... });
 //
+// A viewer adds its window system's needs:
+//   options.instance_extensions = {names from glfwGetRequiredInstanceExtensions};
+//   options.device_extensions = {VK_KHR_SWAPCHAIN_EXTENSION_NAME};
+//   options.create_surface = [&](VkInstance instance) -> Result<VkSurfaceKHR> { glfwCreateWindowSurface(...) };
+//
+// Options:
+// - instance_extensions are enabled beside VK_EXT_debug_utils (validation) and VK_KHR_surface
+//   (added when create_surface is set); duplicates are dropped. One the loader does not offer
+//   fails creation with "Vulkan instance extension NAME is not available (the loader offers: ...)".
+// - device_extensions are enabled beside VK_KHR_push_descriptor. A device lacking one is rejected
+//   ("NAME: lacks VK_KHR_swapchain"); when no device is left, creation fails with that reason.
+// - create_surface is called once, right after the instance exists. Its error fails creation. The
+//   surface it returns belongs to the Context from then on: it is destroyed after the device and
+//   before the instance (also when creation fails later); callers must not destroy it. Swapchains
+//   on it are the caller's, and go before the Context does.
+//
 // Device choice: ContextOptions::device_request, else $PROXYGI_DEVICE, else automatic
-// (discrete > integrated > virtual > CPU); the choice and every rejection are logged.
+// (discrete > integrated > virtual > CPU), among devices meeting the requirements
+// (missing_requirements in device_report.h: with a surface, a queue family that does graphics
+// and compute and presents to it, per vkGetPhysicalDeviceSurfaceSupportKHR). The choice and
+// every rejection are logged. The queue is the first family of the chosen device that does
+// graphics and compute (and presents, with a surface). Without these options the Context is
+// headless: no surface extensions, surface() is VK_NULL_HANDLE.
 #include <functional>
 #include <memory>
 #include <string>
@@ -27,8 +49,7 @@ struct ContextOptions {
   Validation validation = Validation::build_default;
   std::vector<std::string> instance_extensions;  // e.g. glfwGetRequiredInstanceExtensions()
   std::vector<std::string> device_extensions;    // e.g. VK_KHR_swapchain
-  // Makes the surface to present to (e.g. with glfwCreateWindowSurface); empty: headless. The
-  // surface belongs to the Context (destroyed after the device, before the instance).
+  // Makes the surface to present to (e.g. with glfwCreateWindowSurface); empty: headless.
   std::function<Result<VkSurfaceKHR>(VkInstance)> create_surface;
 };
 

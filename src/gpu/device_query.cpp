@@ -1,7 +1,8 @@
 #include "gpu/device_query.h"
 
-#include <cstring>
+#include <algorithm>
 
+#include "gpu/instance.h"
 #include "gpu/vulkan_check.h"
 
 namespace proxygi::gpu {
@@ -17,14 +18,19 @@ DeviceKind kind_of(VkPhysicalDeviceType type) {
   }
 }
 
-bool has_extension(VkPhysicalDevice device, const char* name) {
+std::vector<VkExtensionProperties> device_extensions(VkPhysicalDevice device) {
   std::uint32_t count = 0;
   vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr);
   std::vector<VkExtensionProperties> extensions(count);
   vkEnumerateDeviceExtensionProperties(device, nullptr, &count, extensions.data());
-  for (const auto& extension : extensions)
-    if (std::strcmp(extension.extensionName, name) == 0) return true;
-  return false;
+  extensions.resize(count);
+  return extensions;
+}
+
+bool presents(VkPhysicalDevice device, std::uint32_t family, VkSurfaceKHR surface) {
+  VkBool32 supported = VK_FALSE;
+  return vkGetPhysicalDeviceSurfaceSupportKHR(device, family, surface, &supported) == VK_SUCCESS &&
+         supported == VK_TRUE;
 }
 
 }  // namespace
@@ -37,7 +43,7 @@ Result<std::vector<VkPhysicalDevice>> physical_devices(VkInstance instance) {
   return devices;
 }
 
-DeviceReport query_device(VkPhysicalDevice device, int index) {
+DeviceReport query_device(VkPhysicalDevice device, int index, const DeviceNeeds& needs) {
   DeviceReport report;
   report.index = index;
 
@@ -65,15 +71,22 @@ DeviceReport query_device(VkPhysicalDevice device, int index) {
     report.dynamic_rendering = features13.dynamicRendering == VK_TRUE;
     report.synchronization2 = features13.synchronization2 == VK_TRUE;
   }
-  report.push_descriptor = has_extension(device, VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME);
+  const auto extensions = device_extensions(device);
+  report.push_descriptor = missing_extensions({VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME}, extensions).empty();
+  report.missing_extensions = missing_extensions(needs.extensions, extensions);
 
   std::uint32_t family_count = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(device, &family_count, nullptr);
   std::vector<VkQueueFamilyProperties> families(family_count);
   vkGetPhysicalDeviceQueueFamilyProperties(device, &family_count, families.data());
-  for (const auto& family : families)
-    if ((family.queueFlags & VK_QUEUE_GRAPHICS_BIT) && (family.queueFlags & VK_QUEUE_COMPUTE_BIT))
-      report.graphics_compute_queue = true;
+  report.needs_present = needs.surface != VK_NULL_HANDLE;
+  for (std::uint32_t i = 0; i < family_count; ++i) {
+    if (!(families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) || !(families[i].queueFlags & VK_QUEUE_COMPUTE_BIT)) continue;
+    report.graphics_compute_queue = true;
+    if (report.queue_family < 0 && (!report.needs_present || presents(device, i, needs.surface)))
+      report.queue_family = static_cast<int>(i);
+  }
+  report.present_queue = report.needs_present && report.queue_family >= 0;
 
   VkFormatProperties rgba32f{};
   vkGetPhysicalDeviceFormatProperties(device, VK_FORMAT_R32G32B32A32_SFLOAT, &rgba32f);

@@ -55,11 +55,14 @@ std::vector<std::string> missing_requirements(const DeviceReport& device) {
   std::vector<std::string> missing;
   if (device.api_version < ((1u << 22) | (2u << 12))) missing.push_back("Vulkan " + api_version_string(device.api_version) + " < 1.2");
   if (!device.graphics_compute_queue) missing.push_back("no queue family with graphics and compute");
+  else if (device.needs_present && !device.present_queue)
+    missing.push_back("no queue family with graphics and compute that can present to the surface");
   if (!device.dynamic_rendering) missing.push_back("no dynamic rendering");
   if (!device.synchronization2) missing.push_back("no synchronization2");
   if (!device.push_descriptor) missing.push_back("no VK_KHR_push_descriptor");
   if (!device.rgba16f_attachment) missing.push_back("RGBA16F is not a color attachment format");
   if (!device.float32_blend) missing.push_back("no blending on RGBA32F attachments");
+  for (const auto& extension : device.missing_extensions) missing.push_back("lacks " + extension);
   return missing;
 }
 

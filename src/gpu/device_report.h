@@ -1,7 +1,9 @@
 #pragma once
 // What proxygi needs to know about a Vulkan physical device, and how one is chosen.
 // Selection prefers a discrete GPU, then an integrated GPU, then a virtual GPU, then a CPU
-// device (lavapipe); a device lacking a hard requirement is rejected with a reason.
+// device (lavapipe); a device lacking a hard requirement is rejected with a reason. With a
+// surface, the requirements include a queue family that also presents to it; device extensions
+// a caller asks for are requirements too.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -20,6 +22,11 @@ struct DeviceReport {
   std::uint32_t api_version = 0;  // VK_MAKE_API_VERSION layout
   std::string driver;            // driver name and info, e.g. "llvmpipe: Mesa 22.3.6"
   bool graphics_compute_queue = false;   // one queue family with graphics and compute
+  bool needs_present = false;            // a surface was given: the queue must present to it
+  bool present_queue = false;            // a graphics+compute family presents to that surface
+  int queue_family = -1;                 // the first family with graphics and compute (and present
+                                         // when needs_present); -1 when there is none
+  std::vector<std::string> missing_extensions;  // requested device extensions it lacks
   bool dynamic_rendering = false;        // Vulkan 1.3 core feature (or KHR extension)
   bool synchronization2 = false;
   bool push_descriptor = false;          // VK_KHR_push_descriptor (passes bind without pools)

@@ -10,25 +10,6 @@
 namespace proxygi::gpu {
 namespace {
 
-void image_barrier(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkImageLayout to,
-                   VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access, VkPipelineStageFlags2 dst_stage,
-                   VkAccessFlags2 dst_access) {
-  VkImageMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-  barrier.srcStageMask = src_stage;
-  barrier.srcAccessMask = src_access;
-  barrier.dstStageMask = dst_stage;
-  barrier.dstAccessMask = dst_access;
-  barrier.oldLayout = from;
-  barrier.newLayout = to;
-  barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  barrier.image = image;
-  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-  VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-  dependency.imageMemoryBarrierCount = 1;
-  dependency.pImageMemoryBarriers = &barrier;
-  vkCmdPipelineBarrier2(commands, &dependency);
-}
-
 bool is_bgra(VkFormat format) { return format == VK_FORMAT_B8G8R8A8_UNORM || format == VK_FORMAT_B8G8R8A8_SRGB; }
 
 }  // namespace
@@ -49,9 +30,10 @@ Status SoftGiFrame::prepare_output(const FrameOutput& output) {
                       " is not R8G8B8A8 or B8G8R8A8 (UNORM or SRGB)");
   Image& staging = is_srgb_format(target.format) ? output_srgb_ : output_unorm_;
   if (staging.handle() != VK_NULL_HANDLE) return {};
-  auto made = Image::create(context_, config_.width, config_.height,
-                            is_srgb_format(target.format) ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM,
-                            VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT);
+  auto made =
+      Image::create(context_, config_.width, config_.height,
+                    is_srgb_format(target.format) ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM,
+                    VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT);
   if (!made) return made.error();
   staging = std::move(*made);
   return {};
@@ -83,19 +65,19 @@ void SoftGiFrame::record_output(VkCommandBuffer commands, std::uint32_t slot_ind
   const Image& staging = is_srgb_format(target.format) ? output_srgb_ : output_unorm_;
   if (staging.handle() == VK_NULL_HANDLE) return;  // prepare_output was not called: nothing to write with
   constexpr VkPipelineStageFlags2 kTransfer = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
-  image_barrier(commands, staging.handle(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, kTransfer,
-                0, kTransfer, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  transition(commands, staging.handle(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+             {kTransfer, 0, kTransfer, VK_ACCESS_2_TRANSFER_WRITE_BIT});
   VkBufferImageCopy region{};
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   region.imageExtent = {config_.width, config_.height, 1};
   vkCmdCopyBufferToImage(commands, targets_.ldr.handle(), staging.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
                          &region);
-  image_barrier(commands, staging.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                kTransfer, VK_ACCESS_2_TRANSFER_WRITE_BIT, kTransfer, VK_ACCESS_2_TRANSFER_READ_BIT);
+  transition(commands, staging.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+             {kTransfer, VK_ACCESS_2_TRANSFER_WRITE_BIT, kTransfer, VK_ACCESS_2_TRANSFER_READ_BIT});
   // The caller's image: whatever it was used for before completes first (all commands).
-  image_barrier(commands, target.image, target.layout_before, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT,
-                kTransfer, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  transition(commands, target.image, target.layout_before, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+             {VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT,
+              kTransfer, VK_ACCESS_2_TRANSFER_WRITE_BIT});
   const bool same = target.width == config_.width && target.height == config_.height && !is_bgra(target.format);
   if (same) {
     VkImageCopy copy{};
@@ -112,9 +94,9 @@ void SoftGiFrame::record_output(VkCommandBuffer commands, std::uint32_t slot_ind
     vkCmdBlitImage(commands, staging.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target.image,
                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, scaled ? VK_FILTER_LINEAR : VK_FILTER_NEAREST);
   }
-  image_barrier(commands, target.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, target.layout_after, kTransfer,
-                VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-                VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT);
+  transition(commands, target.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, target.layout_after,
+             {kTransfer, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+              VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT});
 }
 
 }  // namespace proxygi::gpu

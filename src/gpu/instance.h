@@ -1,5 +1,6 @@
 #pragma once
-// The Vulkan instance, headless (no surface extensions), with an optional validation layer
+// The Vulkan instance: headless by default (no surface extensions), or with the extensions a
+// caller names (a window system's surface extensions, say), and an optional validation layer
 // whose messages are counted: tests fail on any message, so every one is kept for the report.
 #include <atomic>
 #include <memory>
@@ -31,11 +32,21 @@ class ValidationLog {
   std::vector<std::string> messages_;
 };
 
+// Extension name lists (instance or device): `names` with each of `more` appended unless it is
+// already there, in order.
+std::vector<std::string> merge_extensions(std::vector<std::string> names, const std::vector<std::string>& more);
+// Instance extensions that the loader and its drivers offer, plus those of `layer` when given.
+std::vector<VkExtensionProperties> instance_extensions(const char* layer = nullptr);
+// The names in `wanted` that `available` (from vkEnumerate*ExtensionProperties) lacks.
+std::vector<std::string> missing_extensions(const std::vector<std::string>& wanted,
+                                            const std::vector<VkExtensionProperties>& available);
+
 class Instance {
  public:
   // Creates the instance; with validation the Khronos layer must be installed
-  // (Debian: vulkan-validationlayers), else this fails naming the package.
-  // `extensions` are enabled beside VK_EXT_debug_utils (a window system's surface extensions).
+  // (Debian: vulkan-validationlayers), else this fails naming the package. `extensions` are
+  // enabled beside VK_EXT_debug_utils (added with validation; duplicates are dropped); one the
+  // loader does not offer fails naming it and listing what the loader offers.
   static Result<std::unique_ptr<Instance>> create(bool validation, const std::vector<std::string>& extensions = {});
   ~Instance();
   Instance(const Instance&) = delete;

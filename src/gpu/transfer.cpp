@@ -18,22 +18,27 @@ void memory_barrier(VkCommandBuffer commands) {
   vkCmdPipelineBarrier2(commands, &dependency);
 }
 
-void transition(VkCommandBuffer commands, const Image& image, VkImageLayout from, VkImageLayout to) {
+void transition(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkImageLayout to,
+                const BarrierScopes& scopes, VkImageAspectFlags aspect, std::uint32_t mip_levels) {
   VkImageMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-  barrier.srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-  barrier.srcAccessMask = VK_ACCESS_2_MEMORY_WRITE_BIT;
-  barrier.dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-  barrier.dstAccessMask = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT;
+  barrier.srcStageMask = scopes.src_stages;
+  barrier.srcAccessMask = scopes.src_access;
+  barrier.dstStageMask = scopes.dst_stages;
+  barrier.dstAccessMask = scopes.dst_access;
   barrier.oldLayout = from;
   barrier.newLayout = to;
   barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  barrier.image = image.handle();
-  barrier.subresourceRange = {image.aspect(), 0, image.mip_levels(), 0, 1};
+  barrier.image = image;
+  barrier.subresourceRange = {aspect, 0, mip_levels, 0, 1};
   VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
   dependency.imageMemoryBarrierCount = 1;
   dependency.pImageMemoryBarriers = &barrier;
   vkCmdPipelineBarrier2(commands, &dependency);
+}
+
+void transition(VkCommandBuffer commands, const Image& image, VkImageLayout from, VkImageLayout to) {
+  transition(commands, image.handle(), from, to, {}, image.aspect(), image.mip_levels());
 }
 
 Status upload(Context& context, const Buffer& destination, std::span<const std::uint8_t> bytes) {
@@ -54,7 +59,8 @@ Status upload(Context& context, const Buffer& destination, std::span<const std::
   });
 }
 
-Result<Buffer> create_buffer_with_data(Context& context, std::span<const std::uint8_t> bytes, VkBufferUsageFlags usage) {
+Result<Buffer> create_buffer_with_data(Context& context, std::span<const std::uint8_t> bytes,
+                                       VkBufferUsageFlags usage) {
   auto buffer = Buffer::create(context, bytes.size(), usage, MemoryKind::device_local);
   if (!buffer) return buffer.error();
   Status uploaded = upload(context, *buffer, bytes);
@@ -92,8 +98,7 @@ Result<std::vector<std::uint8_t>> readback(Context& context, const Image& source
     region.imageExtent = {source.width(), source.height(), 1};
     vkCmdCopyImageToBuffer(commands, source.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging->handle(), 1,
                            &region);
-    if (layout != VK_IMAGE_LAYOUT_UNDEFINED)
-      transition(commands, source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout);
+    if (layout != VK_IMAGE_LAYOUT_UNDEFINED) transition(commands, source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout);
   });
   if (!copied) return copied.error();
   std::vector<std::uint8_t> bytes(size);

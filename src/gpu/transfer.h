@@ -2,11 +2,11 @@
 // Moving bytes between host and GPU resources. Each call is synchronous (one fenced submit):
 // meant for set-up, tests and readback of finished frames, not for per-frame streaming (that
 // goes through host-visible ring buffers).
+#include <vulkan/vulkan.h>
+
 #include <cstdint>
 #include <span>
 #include <vector>
-
-#include <vulkan/vulkan.h>
 
 #include "base/result.h"
 #include "gpu/resources.h"
@@ -35,6 +35,19 @@ void memory_barrier(VkCommandBuffer commands);
 
 // Records a layout transition of a whole image with a full (conservative) barrier.
 void transition(VkCommandBuffer commands, const Image& image, VkImageLayout from, VkImageLayout to);
+
+// The scopes of an image barrier; the defaults are the full barrier transition() records.
+struct BarrierScopes {
+  VkPipelineStageFlags2 src_stages = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+  VkAccessFlags2 src_access = VK_ACCESS_2_MEMORY_WRITE_BIT;
+  VkPipelineStageFlags2 dst_stages = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+  VkAccessFlags2 dst_access = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT;
+};
+// A layout transition of an image the caller owns (a swapchain image: no gpu::Image), colour
+// aspect, `mip_levels` levels from 0, one layer.
+void transition(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkImageLayout to,
+                const BarrierScopes& scopes = {}, VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT,
+                std::uint32_t mip_levels = 1);
 
 template <class T>
 std::span<const std::uint8_t> as_bytes(std::span<const T> values) {

@@ -4,6 +4,7 @@
 // converts linear to sRGB after clamping to [0, 1]. Writes are atomic (temporary file + rename).
 #include <cstdint>
 #include <filesystem>
+#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -37,6 +38,9 @@ Result<ImageF> read_image(const std::filesystem::path& path, std::size_t max_pix
 // 8-bit sRGB RGBA PNG of linear values (clamped to [0, 1], NaN -> 0, rounded to the nearest
 // code; alpha clamped and written without sRGB encoding). Deterministic bytes.
 Status write_png(const std::filesystem::path& path, const ImageF& image);
+// sRGB-encoded RGBA8 bytes (width × height, top row first) written as they are: the bytes
+// write_png gives for their linear decoding, without the decode and re-encode.
+Status write_png_rgba8(const std::filesystem::path& path, std::span<const std::uint8_t> rgba8, int width, int height);
 // Linear float OpenEXR (RGBA, 32-bit float channels, ZIP compression: lossless, bit-exact).
 Status write_exr(const std::filesystem::path& path, const ImageF& image);
 

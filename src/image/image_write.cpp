@@ -56,10 +56,16 @@ Status write_png(const std::filesystem::path& path, const ImageF& image) {
     rgba[4 * i + 2] = to_byte(linear_to_srgb(std::clamp(p.b, 0.0f, 1.0f)));
     rgba[4 * i + 3] = to_byte(p.a);
   }
+  return write_png_rgba8(path, rgba, image.width, image.height);
+}
+
+Status write_png_rgba8(const std::filesystem::path& path, std::span<const std::uint8_t> rgba8, int width, int height) {
+  if (width <= 0 || height <= 0 || rgba8.size() != std::size_t(width) * std::size_t(height) * 4)
+    return file_error(path, "cannot write " + std::to_string(rgba8.size()) + " bytes as a " + std::to_string(width) +
+                                "x" + std::to_string(height) + " RGBA8 image");
   // stb's deflate has no randomness or timestamps: equal pixels give equal bytes.
   std::vector<std::uint8_t> encoded;
-  if (stbi_write_png_to_func(append_bytes, &encoded, image.width, image.height, 4, rgba.data(),
-                             image.width * 4) == 0)
+  if (stbi_write_png_to_func(append_bytes, &encoded, width, height, 4, rgba8.data(), width * 4) == 0)
     return file_error(path, "PNG encoding failed");
   return write_file_atomically(path, encoded);
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <utility>
 
 #include "render/environment_lighting.h"
@@ -66,9 +67,13 @@ EnvironmentLight EnvironmentLight::spherical_harmonics(const sh::RgbSh& lighting
   return light;
 }
 
-Result<EnvironmentLight> EnvironmentLight::from_scene(const scene::Scene& scene, LightingKind kind) {
+Result<EnvironmentLight> EnvironmentLight::from_scene(const scene::Scene& scene, LightingKind kind,
+                                                     int lighting_order) {
   if (kind == LightingKind::sh) {
-    const int order = scene.render.sh_order;
+    const int order = lighting_order;
+    if (order < sh::kMinOrder || order > sh::kMaxOrder)
+      return make_error("lighting order " + std::to_string(order) + " out of range (" + std::to_string(sh::kMinOrder) +
+                        ".." + std::to_string(sh::kMaxOrder) + ")");
     auto environment = render::make_environment_lighting(scene, order);
     if (!environment) return environment.error();
     sh::RgbSh lighting = std::move(environment->lighting);

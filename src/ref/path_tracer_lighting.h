@@ -13,9 +13,11 @@
 //    channel, signed: the band-limited lighting rings below zero and the proxy method integrates
 //    it unclamped; clamping here made the default scene's open ground 5–21% brighter (blue to
 //    red) at order 6 than the proxy method shows, an error of the comparison, not of visibility.
-//    L is the scene's environment projected to order scene.render.sh_order by
-//    render::make_environment_lighting and windowed with sh::apply_ringing_window(order) exactly
-//    as render::make_frame_tables does. No sun term: the disc is inside the projection.
+//    L is the scene's environment projected to order `lighting_order` (the reference's own band
+//    limit, sh::kMinOrder..sh::kMaxOrder; `proxygi reference` defaults it to the scene's
+//    render.sh_order) by render::make_environment_lighting and windowed with
+//    sh::apply_ringing_window(order) exactly as render::make_frame_tables does. No sun term: the
+//    disc is inside the projection.
 // sh and map carry an EquirectSampler (a 128 x 64 table of |SH radiance|, or the map itself)
 // for next-event estimation, MIS-combined with BSDF sampling like the sun.
 #include <array>
@@ -44,8 +46,9 @@ class EnvironmentLight {
   static EnvironmentLight spherical_harmonics(const sh::RgbSh& lighting);
 
   // The scene's environment: full (sky or map) or its windowed SH projection of order
-  // scene.render.sh_order. Fails when a map cannot be read.
-  static Result<EnvironmentLight> from_scene(const scene::Scene& scene, LightingKind kind);
+  // `lighting_order` (used by the sh kind only). Fails when a map cannot be read or the order is
+  // out of range.
+  static Result<EnvironmentLight> from_scene(const scene::Scene& scene, LightingKind kind, int lighting_order);
 
   // Total radiance arriving from `direction` (sun included).
   glm::vec3 radiance(const glm::vec3& direction) const;

@@ -39,7 +39,7 @@ struct ReferenceRecord {
   int height = 0;
   std::string transport;  // "direct", "one-bounce", "multi-bounce"
   std::string lighting;   // "sh", "full"
-  int sh_order = 0;       // scene.render.sh_order (used when lighting is "sh")
+  int sh_order = 0;       // the lighting order (--lighting-order; used when lighting is "sh")
   std::uint32_t seed = 0;
   std::uint32_t samples = 0;  // per pixel, all runs together
   bool guided_filter = false;

@@ -5,8 +5,8 @@
 #include <limits>
 
 #include "base/log.h"
-#include "ref/embree_scene_load.h"
 #include "scene/scene_defaults.h"
+#include "world/world.h"
 
 namespace proxygi::study {
 namespace {
@@ -17,20 +17,19 @@ struct SharedCharacter {
   scene::ClipRef clip;
 };
 
-// Bounds of the character's posed meshes at clip time 0 under an identity transform; `assets`
-// belong to `scene` (one character, no static meshes).
-Result<std::pair<glm::vec3, glm::vec3>> posed_bounds(const scene::Scene& scene, const ref::SceneAssets& assets) {
-  scene::Scene alone = scene;
-  alone.ground.enabled = false;
-  auto meshes = ref::pose_scene_meshes(alone, assets, 0.0);
-  if (!meshes) return meshes.error();
+// Bounds of the world's one character posed at scene time 0 (its transform still identity).
+Result<std::pair<glm::vec3, glm::vec3>> posed_bounds(const world::World& world) {
+  world::WorldState state;
+  if (Status evaluated = world.evaluate(0.0, std::nullopt, state); !evaluated) return evaluated.error();
+  auto primitives = world.pose_instance(state, 0);
+  if (!primitives) return primitives.error();
   glm::vec3 low(std::numeric_limits<float>::max()), high(-std::numeric_limits<float>::max());
-  for (const ref::TriangleMesh& mesh : *meshes)
-    for (const glm::vec3& p : mesh.positions) {
+  for (const anim::PosedPrimitive& primitive : *primitives)
+    for (const glm::vec3& p : primitive.positions) {
       low = glm::min(low, p);
       high = glm::max(high, p);
     }
-  if (!(low.x <= high.x)) return make_error(scene.characters.front().model + ": no geometry to frame");
+  if (!(low.x <= high.x)) return make_error(world.scene().characters.front().model + ": no geometry to frame");
   return std::make_pair(low, high);
 }
 
@@ -46,9 +45,9 @@ Result<ChartScene> character_scene(const SharedCharacter& shared, const ChartSce
   chart.scene.characters = {character};
 
   // The model is imported once: for its bounds here and its clip's duration below.
-  auto assets = ref::load_scene_assets(chart.scene, options.assets_dir);
-  if (!assets) return assets.error();
-  auto bounds = posed_bounds(chart.scene, *assets);
+  auto world = world::World::load(chart.scene, {.assets_dir = options.assets_dir, .load_rigs = false});
+  if (!world) return world.error();
+  auto bounds = posed_bounds(**world);
   if (!bounds) return bounds.error();
   const glm::vec3 extent = bounds->second - bounds->first;
   const float scale = 1.7f / std::max({extent.x, extent.y, extent.z});
@@ -64,8 +63,9 @@ Result<ChartScene> character_scene(const SharedCharacter& shared, const ChartSce
   chart.scene.camera.kind = camera;
 
   // One pass over the clip: the frames of motion are spread over its duration.
-  const auto& clips = assets->characters.front().character.clips;
-  const int clip = assets->characters.front().clip;
+  const world::CharacterInstance& instance = (*world)->instances().front();
+  const auto& clips = instance.model->character.clips;
+  const int clip = instance.clip;
   const float duration = clip >= 0 && std::size_t(clip) < clips.size() ? clips[std::size_t(clip)].duration : 1.0f;
   chart.scene.output.frame_count = std::max(1, int(std::floor(duration * chart.scene.output.fps)));
   return chart;

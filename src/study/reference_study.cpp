@@ -5,7 +5,6 @@
 #include <sstream>
 
 #include "ref/embree_scene.h"
-#include "ref/embree_scene_load.h"
 #include "ref/flip.h"
 #include "ref/path_tracer.h"
 #include "ref/reference_render_io.h"
@@ -29,14 +28,14 @@ int FrameTracer::height() const { return state_->sources->scene.output.height; }
 Result<SceneSources> load_scene_sources(const ChartScene& chart, const ReferenceOptions& options) {
   SceneSources sources;
   sources.scene = chart.scene;
-  sources.scene.render.sh_order = options.reference_order;
-  auto assets = ref::load_scene_assets(sources.scene, options.assets_dir);
-  if (!assets) return assets.error();
-  sources.assets = std::move(*assets);
-  auto lighting = ref::EnvironmentLight::from_scene(sources.scene, options.lighting);
+  auto world = world::World::load(sources.scene, {.assets_dir = options.assets_dir, .load_rigs = false});
+  if (!world) return world.error();
+  sources.world = std::move(*world);
+  sources.geometry = ref::make_scene_geometry(*sources.world);
+  auto lighting = ref::EnvironmentLight::from_scene(sources.scene, options.lighting, options.reference_order);
   if (!lighting) return lighting.error();
   sources.lighting = std::make_unique<ref::EnvironmentLight>(std::move(*lighting));
-  auto background = ref::EnvironmentLight::from_scene(sources.scene, ref::LightingKind::full);
+  auto background = ref::EnvironmentLight::from_scene(sources.scene, ref::LightingKind::full, options.reference_order);
   if (!background) return background.error();
   sources.background = std::make_unique<ref::EnvironmentLight>(std::move(*background));
   return sources;
@@ -46,7 +45,9 @@ Result<std::unique_ptr<FrameTracer>> FrameTracer::create(const SceneSources& sou
   auto state = std::make_unique<State>();
   state->sources = &sources;
   const double time_s = scene::frame_time_s(sources.scene.output, frame);
-  auto meshes = ref::pose_scene_meshes(sources.scene, sources.assets, time_s);
+  world::WorldState world_state;
+  if (Status evaluated = sources.world->evaluate(time_s, std::nullopt, world_state); !evaluated) return evaluated.error();
+  auto meshes = ref::world_meshes(*sources.world, world_state, sources.geometry);
   if (!meshes) return meshes.error();
   auto geometry = ref::EmbreeScene::build(std::move(*meshes));
   if (!geometry) return geometry.error();
@@ -54,7 +55,7 @@ Result<std::unique_ptr<FrameTracer>> FrameTracer::create(const SceneSources& sou
   ref::PathTracerSettings settings;
   settings.transport = ref::LightTransport::one_bounce;
   state->tracer = std::make_unique<ref::PathTracer>(*state->geometry, *sources.lighting, *sources.background, settings);
-  state->camera = scene::evaluate_scene_camera(sources.scene, time_s);
+  state->camera = world_state.camera;
   return std::unique_ptr<FrameTracer>(new FrameTracer(std::move(state)));
 }
 

@@ -18,12 +18,13 @@
 
 #include "base/result.h"
 #include "image/image.h"
-#include "ref/embree_scene_load.h"
 #include "ref/metrics.h"
 #include "ref/path_tracer_lighting.h"
 #include "ref/reference_render.h"
+#include "ref/scene_geometry.h"
 #include "study/chart_rows.h"
 #include "study/chart_scenes.h"
+#include "world/world.h"
 
 namespace proxygi::study {
 
@@ -32,7 +33,7 @@ inline constexpr std::uint32_t kTestSeed = 977;  // path-tracing rows: independe
 
 struct ReferenceOptions {
   int reference_spp = 1024;
-  int reference_order = 6;
+  int reference_order = 6;  // SH order of the sh reference lighting (its own band limit, not render.sh_order)
   ref::LightingKind lighting = ref::LightingKind::sh;
   std::filesystem::path cache_dir;
   std::filesystem::path assets_dir;
@@ -56,17 +57,19 @@ struct ImageScores {
   double flip = 0.0;  // HDR-FLIP
 };
 
-// What every frame of one chart scene shares: the scene (render.sh_order = the reference order),
-// its imported models, and the reference lighting and background. Made once per scene.
+// What every frame of one chart scene shares: the scene as the chart gives it, its world (models
+// imported once, no rigs) and decoded textures, and the reference lighting (SH order
+// options.reference_order) and background. Made once per scene.
 struct SceneSources {
   scene::Scene scene;
-  ref::SceneAssets assets;
+  std::unique_ptr<world::World> world;
+  ref::SceneGeometry geometry;
   std::unique_ptr<ref::EnvironmentLight> lighting;    // options.lighting
   std::unique_ptr<ref::EnvironmentLight> background;  // the full environment, seen by missing rays
 };
 Result<SceneSources> load_scene_sources(const ChartScene& chart, const ReferenceOptions& options);
 
-// The path tracer set up for one frame of a chart scene (geometry posed at the frame's time).
+// The path tracer set up for one frame of a chart scene (the world evaluated at the frame's time).
 // `sources` must outlive the tracer.
 class FrameTracer {
  public:

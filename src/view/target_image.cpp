@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "gpu/resources.h"
+#include "gpu/transfer.h"
 
 namespace proxygi::view {
 
@@ -10,25 +11,13 @@ Result<std::vector<std::uint8_t>> read_target(gpu::Context& context, const Targe
   const VkDeviceSize size = VkDeviceSize(target.width) * target.height * 4;
   auto buffer = gpu::Buffer::create(context, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryKind::host_visible);
   if (!buffer) return buffer.error();
-  auto barrier = [&](VkCommandBuffer commands, VkImageLayout from, VkImageLayout to) {
-    VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-    b.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
-    b.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
-    b.oldLayout = from;
-    b.newLayout = to;
-    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.image = target.image;
-    b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0,
-                         nullptr, 0, nullptr, 1, &b);
-  };
   Status copied = context.submit_and_wait([&](VkCommandBuffer commands) {
-    barrier(commands, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+    gpu::transition(commands, target.image, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {target.width, target.height, 1};
     vkCmdCopyImageToBuffer(commands, target.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer->handle(), 1, &region);
-    barrier(commands, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout);
+    gpu::transition(commands, target.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout);
   });
   if (!copied) return copied.error();
   std::vector<std::uint8_t> bytes(size);
@@ -39,30 +28,14 @@ Result<std::vector<std::uint8_t>> read_target(gpu::Context& context, const Targe
   return bytes;
 }
 
-}  // namespace proxygi::view
-
-namespace proxygi::view {
-
 Status clear_target(gpu::Context& context, const TargetImage& target) {
   return context.submit_and_wait([&](VkCommandBuffer commands) {
-    VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-    b.srcAccessMask = 0;
-    b.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-    b.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    b.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.image = target.image;
-    b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0,
-                         nullptr, 1, &b);
+    gpu::transition(commands, target.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
     const VkClearColorValue gray{{0.08f, 0.08f, 0.09f, 1.0f}};
-    vkCmdClearColorImage(commands, target.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &gray, 1, &b.subresourceRange);
-    b.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-    b.dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-    b.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-    b.newLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, 0, 0,
-                         nullptr, 0, nullptr, 1, &b);
+    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    vkCmdClearColorImage(commands, target.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &gray, 1, &range);
+    gpu::transition(commands, target.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                    VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
   });
 }
 

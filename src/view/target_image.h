@@ -23,10 +23,8 @@ struct TargetImage {
 // the queue. BGRA formats are swizzled; sRGB-encoded bytes stay as they are.
 Result<std::vector<std::uint8_t>> read_target(gpu::Context& context, const TargetImage& target, VkImageLayout layout);
 
-}  // namespace proxygi::view
-
-namespace proxygi::view {
 // Clears `target` to a dark gray and leaves it in COLOR_ATTACHMENT_OPTIMAL (the layout the UI
 // pass expects): what shows before the first scene is loaded. Waits for the queue.
 Status clear_target(gpu::Context& context, const TargetImage& target);
+
 }  // namespace proxygi::view

@@ -113,7 +113,10 @@ Status Viewer::adopt(Result<LoadedScene> loaded) {
   std::shared_ptr<const world::World> previous = world_;
   world_ = loaded->world;
   scene_ = world_->scene();
-  if (!core_) core_.emplace(scene_);
+  if (!core_) {
+    core_.emplace(scene_);
+    core_->state().playback.playing = options_.play;
+  }
   else if (!keep) core_->reset_for_scene(scene_);
   if (internal_width_ == 0) internal_width_ = display_width_, internal_height_ = display_height_;
   if (Status s = make_renderer(); !s) {

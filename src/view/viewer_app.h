@@ -36,6 +36,7 @@ struct ViewerOptions {
   bool adaptive_resolution = true;   // lower internal resolution below min_fps
   double min_fps = 15.0;
   bool show_ui = true;
+  bool play = false;                 // start playing
   std::optional<Script> script;      // drive the viewer from a script (fixed time step)
   int max_frames = 0;                // stop after this many frames (0: no limit)
   std::filesystem::path state_out;   // write the final viewer state here as JSON (tests)

@@ -1,7 +1,7 @@
 # proxygi record: planner unit tests, argument errors (exit 2), and GPU runs checking
 # determinism, resume and shard merging (record_gpu_check.cmake).
 proxygi_test(record_plan_tests
-  SOURCES ${PROJECT_SOURCE_DIR}/tests/record/record_plan_test.cpp
+  SOURCES ${PROJECT_SOURCE_DIR}/tests/record/record_plan_test.cpp ${PROJECT_SOURCE_DIR}/tests/record/task_queue_test.cpp
   DEPS proxygi::base proxygi::scene proxygi::run
   LABELS unit)
 

@@ -55,5 +55,28 @@ TEST(DeviceChoice, RequestByIndexOrNameSubstring) {
   EXPECT_FALSE(choose_device({}, "").ok());
 }
 
+TEST(DeviceChoice, WithASurfaceRejectsDeviceWhoseQueuesCannotPresent) {
+  std::vector<DeviceReport> devices = {usable_device(0, "llvmpipe", DeviceKind::cpu),
+                                       usable_device(1, "Headless GPU", DeviceKind::discrete)};
+  for (auto& device : devices) device.needs_present = true;
+  devices[0].present_queue = true;
+  auto choice = choose_device(devices, "");
+  ASSERT_TRUE(choice.ok()) << choice.message();
+  EXPECT_EQ(choice->index, 0);
+  ASSERT_EQ(choice->rejections.size(), 1u);
+  EXPECT_NE(choice->rejections[0].find("present"), std::string::npos) << choice->rejections[0];
+  auto requested = choose_device(devices, "headless");
+  ASSERT_FALSE(requested.ok());
+  EXPECT_NE(requested.message().find("present to the surface"), std::string::npos) << requested.message();
+}
+
+TEST(DeviceChoice, RejectsDeviceMissingARequestedExtensionNamingIt) {
+  std::vector<DeviceReport> devices = {usable_device(0, "llvmpipe", DeviceKind::cpu)};
+  devices[0].missing_extensions = {"VK_KHR_swapchain"};
+  auto choice = choose_device(devices, "");
+  ASSERT_FALSE(choice.ok());
+  EXPECT_NE(choice.message().find("llvmpipe: lacks VK_KHR_swapchain"), std::string::npos) << choice.message();
+}
+
 }  // namespace
 }  // namespace proxygi::gpu

@@ -2,13 +2,14 @@
 // changed in place gives the frame a renderer created with it gives, bit for bit; a scene time
 // renders what the frame number renders (and today's goldens); a camera override renders that
 // camera; a caller's image receives the readback's pixels; the GPU skins the world state's poses
-// as the CPU (and so the path tracer) does.
+// as the path tracer's CPU skinning does.
 #include <cstring>
 #include <memory>
 
 #include "gpu/scene_renderer.h"
 #include "gpu/transfer.h"
 #include "gpu_test_context.h"
+#include "ref/scene_geometry.h"
 #include "run/golden.h"
 #include "scene/scene_defaults.h"
 #include "settings/fields.h"
@@ -192,13 +193,15 @@ TEST_F(LiveRendererTest, CallerImageGetsTheReadbackPixels) {
   EXPECT_FALSE((*renderer)->render(bad).ok());
 }
 
-// The GPU skins the shared world state as the CPU does (World::pose_instance, which the path
-// tracer's meshes come from): the same vertices within 2e-5 m (1e-5 of the 1.8 m figure) at several times.
-TEST_F(LiveRendererTest, GpuSkinningPosesTheWorldStateLikeTheCpu) {
+// The path tracer and the GPU renderer pose the same scene identically: from one shared world
+// state, the GPU's skinned vertices equal the path tracer's meshes (ref::world_meshes, CPU
+// skinning) within 2e-5 m (1e-5 of the 1.8 m figure) at several times.
+TEST_F(LiveRendererTest, GpuAndPathTracerPoseTheWorldStateAlike) {
   auto world = default_world(scene::crowd_scene());
   ASSERT_TRUE(world);
   auto renderer = SceneRenderer::create(context(), world, world->scene().render, kSize, kSize);
   ASSERT_TRUE(renderer.ok()) << renderer.message();
+  const ref::SceneGeometry geometry = ref::make_scene_geometry(*world);
   world::WorldState state;
   for (double t : {0.0, 0.7, 2.35}) {
     ASSERT_TRUE(world->evaluate(t, std::nullopt, state).ok());
@@ -207,20 +210,22 @@ TEST_F(LiveRendererTest, GpuSkinningPosesTheWorldStateLikeTheCpu) {
     ASSERT_TRUE((*renderer)->render(request).ok());
     auto gpu = (*renderer)->read_skinned_positions();
     ASSERT_TRUE(gpu.ok()) << gpu.message();
+    auto traced = ref::world_meshes(*world, state, geometry);
+    ASSERT_TRUE(traced.ok()) << traced.message();
+    // The path tracer's meshes: the ground, then each character's primitives in instance order.
+    std::size_t mesh = world->scene().ground.enabled ? 1 : 0;
     ASSERT_EQ(gpu->size(), world->instances().size());
-    for (std::size_t i = 0; i < world->instances().size(); ++i) {
-      auto cpu = world->pose_instance(state, i);
-      ASSERT_TRUE(cpu.ok()) << cpu.message();
-      ASSERT_EQ((*gpu)[i].size(), cpu->size()) << "instance " << i;
-      for (std::size_t p = 0; p < cpu->size(); ++p) {
-        const auto& expected = (*cpu)[p].positions;
-        ASSERT_EQ((*gpu)[i][p].size(), expected.size());
+    for (std::size_t i = 0; i < gpu->size(); ++i)
+      for (std::size_t p = 0; p < (*gpu)[i].size(); ++p, ++mesh) {
+        ASSERT_LT(mesh, traced->size());
+        const auto& expected = (*traced)[mesh].positions;
+        ASSERT_EQ((*gpu)[i][p].size(), expected.size()) << "instance " << i << " primitive " << p;
         float largest = 0.0f;
         for (std::size_t v = 0; v < expected.size(); ++v)
           largest = std::max(largest, glm::length((*gpu)[i][p][v] - expected[v]));
-        EXPECT_LT(largest, 2e-5f) << "t " << t << " instance " << i << " primitive " << p;  // meters; the figure is 1.8 m
+        EXPECT_LT(largest, 2e-5f) << "t " << t << " instance " << i << " primitive " << p;
       }
-    }
+    EXPECT_EQ(mesh, traced->size() - world->static_models().size()) << "every character mesh compared";
   }
 }
 

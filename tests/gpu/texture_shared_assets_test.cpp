@@ -8,10 +8,11 @@
 
 #include "gpu/scene_renderer.h"
 #include "gpu_test_context.h"
-#include "ref/embree_scene_load.h"
 #include "ref/reference_render.h"
+#include "ref/scene_geometry.h"
 #include "scene/camera.h"
 #include "scene/scene_defaults.h"
+#include "world/world.h"
 
 namespace proxygi::gpu {
 namespace {
@@ -78,10 +79,12 @@ TEST_F(TextureSharedAssetsTest, CesiumManAlbedoAgreesWithTheReference) {
   const scene::Scene scene = cesium_man_scene(kSize);
   const GpuFeatures gpu = render_gpu(context(), scene);
   ASSERT_EQ(gpu.albedo.width, kSize);
-  auto assets = ref::load_scene_assets(scene, PROXYGI_SOURCE_DIR "/assets");
-  ASSERT_TRUE(assets.ok()) << assets.message();
+  auto world = world::World::load(scene, {.assets_dir = PROXYGI_SOURCE_DIR "/assets", .load_rigs = false});
+  ASSERT_TRUE(world.ok()) << world.message();
   const double t = scene::frame_time_s(scene.output, 0);
-  auto meshes = ref::pose_scene_meshes(scene, *assets, t);
+  world::WorldState state;
+  ASSERT_TRUE((*world)->evaluate(t, std::nullopt, state).ok());
+  auto meshes = ref::world_meshes(**world, state, ref::make_scene_geometry(**world));
   ASSERT_TRUE(meshes.ok()) << meshes.message();
   auto embree = ref::EmbreeScene::build(std::move(*meshes));
   ASSERT_TRUE(embree.ok()) << embree.message();

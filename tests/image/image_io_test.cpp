@@ -93,6 +93,24 @@ TEST(ImageIo, PngBytesAreDeterministic) {
   EXPECT_EQ(read_bytes(directory / "a.png"), read_bytes(directory / "b.png"));
 }
 
+// The recorder writes the renderer's sRGB bytes directly: the same file as decoding them to linear
+// and encoding again, for every code in every channel.
+TEST(ImageIo, Rgba8PngEqualsThePngOfItsLinearDecoding) {
+  const fs::path directory = fresh_directory("png_rgba8");
+  const int width = 64, height = 16;
+  std::vector<std::uint8_t> rgba(std::size_t(width) * height * 4);
+  for (std::size_t i = 0; i < rgba.size(); ++i) rgba[i] = std::uint8_t((i * 37 + i / 4) % 256);
+  ImageF linear(width, height);
+  for (std::size_t i = 0; i < linear.pixels.size(); ++i)
+    linear.pixels[i] = glm::vec4(srgb8_to_linear(rgba[4 * i]), srgb8_to_linear(rgba[4 * i + 1]),
+                                 srgb8_to_linear(rgba[4 * i + 2]), float(rgba[4 * i + 3]) / 255.0f);
+  ASSERT_TRUE(write_png_rgba8(directory / "direct.png", rgba, width, height).ok());
+  ASSERT_TRUE(write_png(directory / "linear.png", linear).ok());
+  EXPECT_EQ(read_bytes(directory / "direct.png"), read_bytes(directory / "linear.png"));
+  EXPECT_FALSE(write_png_rgba8(directory / "short.png", std::span(rgba).first(10), width, height).ok());
+  EXPECT_FALSE(fs::exists(directory / "short.png"));
+}
+
 TEST(ImageIo, ReadsHalfFloatRgbExrWrittenByTinyexr) {
   const fs::path path = fresh_directory("exr_half") / "rgb_half.exr";
   // Values exactly representable in half precision, so the expected result is exact.

@@ -113,6 +113,10 @@ TEST(RigFile, RejectsUnknownBonesBadNumbersAndNewerVersions) {
   Result<ProxyRig> broken = parse_rig("{\n\"schema\": \"proxygi.proxies\",\n\"version\": 1,\n\"spheres\": [ {]\n}", "f.json", ch);
   ASSERT_FALSE(broken.ok());
   EXPECT_EQ(broken.message().rfind("f.json:4: not valid JSON", 0), 0u) << broken.message();
+  // A number beyond a double made the JSON library throw out of the parser (fuzz_rig_parse).
+  Result<ProxyRig> overflow = parse("{\"bone\": \"upper\", \"center\": [0,0,0], \"radius\": -0.0054e0682}");
+  ASSERT_FALSE(overflow.ok());
+  EXPECT_EQ(overflow.message().rfind("f.json: invalid rig file", 0), 0u) << overflow.message();
 }
 
 TEST(Tracking, RigidFollowsTheBoneAndBlendedFollowsTheWeights) {

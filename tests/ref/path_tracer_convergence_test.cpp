@@ -229,7 +229,7 @@ TEST(PathTracerLighting, ShOfUniformSkyIsTheSameConstant) {
       scene.environment.sky.below_horizon_color = glm::vec3(0.2f, 0.4f, 0.6f);
   scene.environment.sky.radiance = 2.0f;
   scene.environment.sun.irradiance = 0.0f;
-  auto sh = EnvironmentLight::from_scene(scene, LightingKind::sh);
+  auto sh = EnvironmentLight::from_scene(scene, LightingKind::sh, scene.render.sh_order);
   ASSERT_TRUE(sh.ok()) << sh.message();
   for (const glm::vec3 d : {glm::vec3(0, 1, 0), glm::vec3(0, -1, 0), glm::normalize(glm::vec3(1, 0.2f, -0.5f))}) {
     const glm::vec3 value = sh->radiance(d);
@@ -237,6 +237,27 @@ TEST(PathTracerLighting, ShOfUniformSkyIsTheSameConstant) {
     EXPECT_NEAR(value.g, 0.8f, 2e-3f);
     EXPECT_NEAR(value.b, 1.2f, 2e-3f);
   }
+}
+
+TEST(PathTracerLighting, ShUsesTheGivenOrderNotTheScenes) {
+  // The reference's band limit is its own: the scene's render.sh_order (4 here) does not matter.
+  scene::Scene scene;  // the default sky with its sun: every band carries energy
+  scene.render.sh_order = 4;
+  auto six = EnvironmentLight::from_scene(scene, LightingKind::sh, 6);
+  ASSERT_TRUE(six.ok()) << six.message();
+  scene::Scene six_scene = scene;
+  six_scene.render.sh_order = 6;
+  auto also_six = EnvironmentLight::from_scene(six_scene, LightingKind::sh, 6);
+  auto four = EnvironmentLight::from_scene(scene, LightingKind::sh, 4);
+  ASSERT_TRUE(also_six.ok() && four.ok());
+  float differs = 0.0f;
+  for (const glm::vec3 d : {glm::vec3(0, 1, 0), glm::normalize(glm::vec3(0.3f, 0.8f, 0.5f)), glm::vec3(1, 0, 0)}) {
+    EXPECT_EQ(six->radiance(d), also_six->radiance(d));
+    differs = std::max(differs, glm::length(six->radiance(d) - four->radiance(d)));
+  }
+  EXPECT_GT(differs, 1e-3f) << "orders 4 and 6 gave the same lighting";
+  EXPECT_FALSE(EnvironmentLight::from_scene(scene, LightingKind::sh, 0).ok());
+  EXPECT_FALSE(EnvironmentLight::from_scene(scene, LightingKind::sh, 9).ok());
 }
 
 }  // namespace

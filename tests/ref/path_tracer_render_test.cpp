@@ -12,12 +12,13 @@
 
 #include "image/image.h"
 #include "ref/embree_scene.h"
-#include "ref/embree_scene_load.h"
 #include "ref/path_tracer.h"
 #include "ref/reference_render.h"
+#include "ref/scene_geometry.h"
 #include "scene/camera.h"
 #include "scene/character_motion.h"
 #include "scene/scene_defaults.h"
+#include "world/world.h"
 
 namespace proxygi::ref {
 namespace {
@@ -154,10 +155,12 @@ TEST_F(PathTracerRender, PixelsSeeWhatTheRasterizerProjectsThere) {
 
 TEST(PathTracerScene, DefaultSceneGeometryAtAFrame) {
   const scene::Scene scene = scene::default_scene();
-  auto assets = load_scene_assets(scene, std::filesystem::path(PROXYGI_SOURCE_DIR) / "assets");
-  ASSERT_TRUE(assets.ok()) << assets.message();
+  auto world = world::World::load(scene, {.assets_dir = std::filesystem::path(PROXYGI_SOURCE_DIR) / "assets", .load_rigs = false});
+  ASSERT_TRUE(world.ok()) << world.message();
   const double t = 1.0;
-  auto meshes = pose_scene_meshes(scene, *assets, t);
+  world::WorldState state;
+  ASSERT_TRUE((*world)->evaluate(t, std::nullopt, state).ok());
+  auto meshes = world_meshes(**world, state, make_scene_geometry(**world));
   ASSERT_TRUE(meshes.ok()) << meshes.message();
   ASSERT_GT(meshes->size(), 1u);
   EXPECT_EQ(meshes->front().name, "ground");

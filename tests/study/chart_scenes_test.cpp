@@ -5,7 +5,8 @@
 
 #include <algorithm>
 
-#include "ref/embree_scene_load.h"
+#include "ref/scene_geometry.h"
+#include "world/world.h"
 
 namespace proxygi::study {
 namespace {
@@ -44,9 +45,11 @@ TEST(ChartScenes, SharedCharactersStand1Point7MetresTallOnTheGround) {
   for (const ChartScene& chart : *scenes) {
     scene::Scene alone = chart.scene;
     alone.ground.enabled = false;
-    auto assets = ref::load_scene_assets(alone, options.assets_dir);
-    ASSERT_TRUE(assets.ok()) << assets.message();
-    auto meshes = ref::pose_scene_meshes(alone, *assets, 0.0);
+    auto world = world::World::load(alone, {.assets_dir = options.assets_dir, .load_rigs = false});
+    ASSERT_TRUE(world.ok()) << world.message();
+    world::WorldState state;
+    ASSERT_TRUE((*world)->evaluate(0.0, std::nullopt, state).ok());
+    auto meshes = ref::world_meshes(**world, state, ref::make_scene_geometry(**world));
     ASSERT_TRUE(meshes.ok()) << meshes.message();
     glm::vec3 low(1e30f), high(-1e30f);
     for (const auto& mesh : *meshes)

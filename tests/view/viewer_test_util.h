@@ -72,12 +72,7 @@ inline int max_code_difference(const std::vector<std::uint8_t>& a, const std::ve
 
 // Writes a captured screenshot as a PNG (to look at, or for docs/).
 inline void write_shot(const Shot& shot, const std::vector<std::uint8_t>& rgba, const std::filesystem::path& file) {
-  image::ImageF out;
-  out.width = shot.width, out.height = shot.height;
-  out.pixels.resize(std::size_t(shot.width) * shot.height);
-  for (std::size_t i = 0; i < out.pixels.size(); ++i)
-    for (int c = 0; c < 4; ++c) out.pixels[i][c] = image::srgb8_to_linear(rgba[i * 4 + c]);
-  (void)image::write_png(file, out);
+  (void)image::write_png_rgba8(file, rgba, shot.width, shot.height);
 }
 
 // Within one sRGB code of `expected`; on failure both are written to output_dir(test) to look at.
