@@ -37,6 +37,18 @@ ImU32 bone_color(const std::string& bone) {
   return ImGui::GetColorU32({r, g, b, 0.9f});
 }
 
+// A world segment clipped to the part in front of the near plane (a point just in front of the
+// eye projects far off screen, so unclipped segments streak across the window).
+void draw_segment(ImDrawList& list, const Projector& projector, glm::vec3 a, glm::vec3 b, ImU32 color, float width) {
+  const float near = projector.camera.near_m * 2.0f;
+  const float da = projector.depth(a), db = projector.depth(b);
+  if (da < near && db < near) return;
+  if (da < near) a = a + (b - a) * ((near - da) / (db - da));
+  if (db < near) b = b + (a - b) * ((near - db) / (da - db));
+  const auto pa = projector.project(a), pb = projector.project(b);
+  if (pa && pb) list.AddLine(*pa, *pb, color, width);
+}
+
 void draw_grid(ImDrawList& list, const Projector& projector) {
   const ImU32 color = IM_COL32(60, 60, 70, 140);  // dark: the default ground is light gray
   constexpr int kHalf = 5;  // ±5 m, lines every metre
@@ -46,8 +58,7 @@ void draw_grid(ImDrawList& list, const Projector& projector) {
       for (int s = -kHalf; s < kHalf; ++s) {
         const glm::vec3 a = axis ? glm::vec3(float(i), 0, float(s)) : glm::vec3(float(s), 0, float(i));
         const glm::vec3 b = axis ? glm::vec3(float(i), 0, float(s + 1)) : glm::vec3(float(s + 1), 0, float(i));
-        const auto pa = projector.project(a), pb = projector.project(b);
-        if (pa && pb) list.AddLine(*pa, *pb, color, 1.0f);
+        draw_segment(list, projector, a, b, color, 1.0f);
       }
     }
   }
@@ -82,12 +93,10 @@ void draw_overlays(const scene::CameraState& camera, const world::World* world, 
       for (int node : joints) {
         const int parent = model.character.nodes[std::size_t(node)].parent;
         if (parent < 0 || !joints.count(parent) || std::size_t(node) >= instance.pose.world.size()) continue;
-        const auto a = projector.project(glm::vec3(instance.pose.world[std::size_t(node)][3]));
-        const auto b = projector.project(glm::vec3(instance.pose.world[std::size_t(parent)][3]));
-        if (a && b) {
-          list.AddLine(*a, *b, IM_COL32(255, 230, 80, 230), 2.0f);
-          list.AddCircleFilled(*a, 3.0f, IM_COL32(255, 120, 40, 230));
-        }
+        const glm::vec3 joint(instance.pose.world[std::size_t(node)][3]);
+        draw_segment(list, projector, joint, glm::vec3(instance.pose.world[std::size_t(parent)][3]),
+                     IM_COL32(255, 230, 80, 230), 2.0f);
+        if (const auto at = projector.project(joint)) list.AddCircleFilled(*at, 3.0f, IM_COL32(255, 120, 40, 230));
       }
     }
   }
