@@ -168,7 +168,7 @@ Status Viewer::run() {
   while (!quit_) {
     if (window_ && window_->should_close()) break;
     if (Status s = frame(); !s) return s;
-    ++frames_;
+    if (rendered_last_) ++frames_;
     if (options_.max_frames > 0 && frames_ >= options_.max_frames) break;
     if (script_ && script_->finished() && !loader_.busy() && screenshots_.empty()) break;
   }

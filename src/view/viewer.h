@@ -87,7 +87,8 @@ class Viewer {
   double scale_ = 1.0;
   int adaptive_frames_ = 0;
   double adaptive_ms_ = 0.0;
-  int frames_ = 0;
+  int frames_ = 0;           // frames the renderer drew
+  bool rendered_last_ = false;
   bool first_frame_logged_ = false;
   std::chrono::steady_clock::time_point last_frame_;
   std::chrono::steady_clock::time_point last_pass_timing_;

@@ -38,7 +38,7 @@ struct ViewerOptions {
   bool show_ui = true;
   bool play = false;                 // start playing
   std::optional<Script> script;      // drive the viewer from a script (fixed time step)
-  int max_frames = 0;                // stop after this many frames (0: no limit)
+  int max_frames = 0;                // stop after this many rendered frames (0: no limit)
   std::filesystem::path state_out;   // write the final viewer state here as JSON (tests)
   std::filesystem::path screenshot_dir = "screenshots";  // F12
   PngWriter write_png;

@@ -97,7 +97,8 @@ Status Viewer::render_into(const TargetImage& target) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - options_.started).count();
     std::fprintf(stderr, "view: first frame of %s after %.2f s\n", name_.c_str(), seconds);
   }
-  if (renderer_ && core_->state().toggles.hud && !script_ &&
+  rendered_last_ = true;
+  if (options_.show_ui && core_->state().toggles.ui && core_->state().toggles.hud && !script_ &&
       (want_pass_timing_ || std::chrono::steady_clock::now() - last_pass_timing_ > std::chrono::duration<double>(kPassTimingPeriodS))) {
     want_pass_timing_ = false;
     last_pass_timing_ = std::chrono::steady_clock::now();
@@ -193,7 +194,9 @@ Status Viewer::frame() {
   const double wall_dt = std::min(std::chrono::duration<double>(now - last_frame_).count(), 0.25);
   const double frame_ms = std::chrono::duration<double, std::milli>(now - last_frame_).count();
   last_frame_ = now;
-  if (frames_ > 0) times_.add(frame_ms), adapt_resolution(frame_ms);
+  // Only frames the renderer drew count (not the placeholder frames while the first scene loads).
+  if (rendered_last_) times_.add(frame_ms), adapt_resolution(frame_ms);
+  rendered_last_ = false;
 
   std::vector<Event> events = window_ ? window_->poll() : std::vector<Event>{};
   if (auto loaded = loader_.poll())
