@@ -45,7 +45,7 @@ Result<scene::Scene> stage_model(const std::filesystem::path& model) {
   scene.description = "the default stage around " + model.filename().string();
   scene::Character placed;
   placed.model = std::filesystem::absolute(model).string();
-  placed.clip = clip >= 0 ? scene::ClipRef{std::in_place_type<int>, 0} : scene::ClipRef{std::in_place_type<int>, 0};
+  placed.clip = scene::ClipRef{std::in_place_type<int>, 0};  // without clips the world shows the rest pose
   const glm::vec3 center = 0.5f * (low + high);
   placed.transform.translation = {-center.x, -low.y, -center.z};
   scene.characters = {placed};

@@ -60,8 +60,23 @@ void draw_hud(UiContext& ui, UiRequests& requests) {
               hud.internal_width, hud.internal_height, hud.present.c_str(), hud.swapchain_recreations);
   ImGui::Text("proxies %zu  receivers %llu  triangles %zu", hud.proxies, (unsigned long long)hud.receivers, hud.triangles);
   ImGui::Text("%s (%s)", hud.device.c_str(), hud.driver.c_str());
-  ImGui::Text("time %.3f s  frame %d of %d..%d", playback.time_s, playback.frame(), playback.first_frame,
-              playback.last_frame);
+  ImGui::Text("time %.3f s  frame %d of %d..%d at %g fps  speed %gx %s", playback.time_s, playback.frame(),
+              playback.first_frame, playback.last_frame, playback.fps, playback.speed * playback.direction,
+              std::string(loop_mode_name(playback.loop)).c_str());
+  if (ui.world) {
+    std::string clips = "clips:";
+    for (const auto& instance : ui.world->instances()) {
+      const auto& character = instance.model->character;
+      const bool posed = instance.clip >= 0 && instance.clip < int(character.clips.size());
+      clips.append(" ").append(instance.model->file.filename().string()).append(":");
+      clips.append(posed ? character.clips[std::size_t(instance.clip)].name : std::string("rest"));
+      if (clips.size() > 120) {
+        clips += " ...";
+        break;
+      }
+    }
+    ImGui::TextUnformatted(clips.c_str());
+  }
   if (!hud.passes.empty()) {
     ImGui::TextUnformatted("passes (fenced CPU timings, one submit each; GPU timestamps not used):");
     for (const PassTime& pass : hud.passes) ImGui::Text("  %-20s %7.2f ms", pass.name.c_str(), pass.ms);
