@@ -16,11 +16,15 @@ Result<LoadedScene> load_world(const scene::Scene& scene, const std::string& nam
 }  // namespace
 
 SceneLoader::~SceneLoader() {
-  if (future_.valid()) future_.wait();
+  if (future_.valid()) future_.wait();  // a queued load is dropped
 }
 
 void SceneLoader::start(std::function<Result<LoadedScene>()> work, const std::string& name) {
-  if (future_.valid()) future_.wait();  // one load at a time
+  if (future_.valid()) {  // one load at a time: this one goes next
+    queued_ = std::move(work);
+    queued_name_ = name;
+    return;
+  }
   name_ = name;
   started_ = std::chrono::steady_clock::now();
   future_ = std::async(std::launch::async, std::move(work));
@@ -37,7 +41,11 @@ void SceneLoader::open(const std::string& name, const scene::Scene* current) {
 }
 
 void SceneLoader::load(scene::Scene scene, const std::string& name) {
-  start([scene = std::move(scene), name, assets = assets_dir_]() { return load_world(scene, name, assets); }, name);
+  start([scene = std::move(scene), name, assets = assets_dir_]() -> Result<LoadedScene> {
+    auto loaded = load_world(scene, name, assets);
+    if (loaded) loaded->keep_state = true;
+    return loaded;
+  }, name);
 }
 
 std::string SceneLoader::progress() const {
@@ -51,12 +59,18 @@ std::string SceneLoader::progress() const {
 
 std::optional<Result<LoadedScene>> SceneLoader::poll() {
   if (!future_.valid() || future_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return std::nullopt;
-  return future_.get();
+  Result<LoadedScene> done = future_.get();
+  if (queued_) {
+    start(std::move(queued_), queued_name_);
+    queued_ = nullptr;
+  }
+  return done;
 }
 
 std::optional<Result<LoadedScene>> SceneLoader::wait() {
   if (!future_.valid()) return std::nullopt;
-  return future_.get();
+  future_.wait();
+  return poll();
 }
 
 }  // namespace proxygi::view

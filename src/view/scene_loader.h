@@ -3,6 +3,7 @@
 // then world::World::load (model import, proxy rigs from their cache or a fresh fit). The GPU
 // side (SceneRenderer, uploads) is made on the loop's thread once poll() hands the world over.
 #include <chrono>
+#include <functional>
 #include <future>
 #include <memory>
 #include <optional>
@@ -17,6 +18,7 @@ namespace proxygi::view {
 struct LoadedScene {
   std::string name;  // what was opened (for the title)
   std::shared_ptr<const world::World> world;
+  bool keep_state = false;  // an edit of the shown scene: keep playback, camera and settings
 };
 
 class SceneLoader {
@@ -24,10 +26,11 @@ class SceneLoader {
   explicit SceneLoader(std::filesystem::path assets_dir) : assets_dir_(std::move(assets_dir)) {}
   ~SceneLoader();
 
-  // Starts opening `name` (replacing a load in progress is not supported: the new request waits
-  // for the old one to end). `current` is the scene an environment file applies to.
+  // Starts opening `name`; `current` is the scene an environment file applies to. While a load
+  // runs, a new request is queued (the latest replaces an older queued one) and starts when the
+  // running one ends, so the caller never waits.
   void open(const std::string& name, const scene::Scene* current);
-  // Starts loading an edited scene (clips, environment changed in the UI).
+  // Starts loading an edited scene (clips, environment changed in the UI); keep_state is set.
   void load(scene::Scene scene, const std::string& name);
 
   bool busy() const { return future_.valid(); }
@@ -42,6 +45,8 @@ class SceneLoader {
   void start(std::function<Result<LoadedScene>()> work, const std::string& name);
   std::filesystem::path assets_dir_;
   std::future<Result<LoadedScene>> future_;
+  std::function<Result<LoadedScene>()> queued_;
+  std::string queued_name_;
   std::string name_;
   std::chrono::steady_clock::time_point started_;
 };

@@ -102,8 +102,7 @@ Status Viewer::make_renderer() {
 // A finished load: the new world replaces the shown one, or its error is shown and the
 // previous scene stays. Without a previous scene the error ends the run.
 Status Viewer::adopt(Result<LoadedScene> loaded) {
-  const bool keep = reload_keeps_state_;
-  reload_keeps_state_ = false;
+  const bool keep = loaded && loaded->keep_state;
   if (!loaded) {
     log_info("view: " + loaded.message());
     if (!world_) return loaded.error();

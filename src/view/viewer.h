@@ -63,7 +63,6 @@ class Viewer {
   ImGuiContext* imgui_ = nullptr;
   std::unique_ptr<UiPass> ui_pass_;
   SceneLoader loader_;
-  bool reload_keeps_state_ = false;
 
   std::string name_;  // what is shown
   std::shared_ptr<const world::World> world_;

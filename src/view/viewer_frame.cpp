@@ -182,10 +182,7 @@ Status Viewer::finish_ui(const TargetImage& target, VkSemaphore signal, VkImageL
   if (requests.open) loader_.open(*requests.open, world_ ? &world_->scene() : nullptr);
   if (requests.save)
     if (Status s = save_scene(*requests.save); !s) core_->state().message = s.message();
-  if (requests.reload) {
-    reload_keeps_state_ = true;
-    loader_.load(scene_, name_);
-  }
+  if (requests.reload) loader_.load(scene_, name_);
   return {};
 }
 
