@@ -67,7 +67,7 @@ void draw_grid(ImDrawList& list, const Projector& projector) {
 }  // namespace
 
 void draw_overlays(const scene::CameraState& camera, const world::World* world, const world::WorldState& state,
-                   const Toggles& toggles) {
+                   const Toggles& toggles, float shadow_eta) {
   if (!toggles.grid && !toggles.proxies && !toggles.bones) return;
   const ImVec2 size = ImGui::GetIO().DisplaySize;
   const Projector projector(camera, int(size.x), int(size.y));
@@ -84,7 +84,11 @@ void draw_overlays(const scene::CameraState& camera, const world::World* world, 
         if (!center) continue;
         const float radius_px = sphere.radius * projector.focal_px / projector.depth(sphere.center);
         const std::string& bone = s < model.rig.spheres.size() ? model.rig.spheres[s].bone : std::string();
-        list.AddCircle(*center, radius_px, bone_color(bone), 32, 1.5f);
+        const bool selected = !toggles.selected_bone.empty() && bone == toggles.selected_bone;
+        list.AddCircle(*center, radius_px, selected ? IM_COL32(255, 255, 255, 255) : bone_color(bone), 32,
+                       selected ? 3.5f : 1.5f);
+        // The shell's outline as the sphere's, scaled: exact only away from the eye, enough to see reach.
+        if (toggles.shells) list.AddCircle(*center, radius_px * shadow_eta, (bone_color(bone) & 0x00FFFFFFu) | 0x50000000u, 48);
       }
     }
     if (toggles.bones) {

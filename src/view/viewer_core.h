@@ -65,6 +65,8 @@ struct Toggles {
   bool proxies = false; // O
   bool grid = false;    // G
   bool wireframe = false;  // W (not drawn yet: shown as a toggle only)
+  bool shells = false;     // each proxy's shadow sphere of influence (η·r) with its sphere
+  std::string selected_bone;  // its spheres are highlighted (empty: none)
 };
 
 struct ViewerState {

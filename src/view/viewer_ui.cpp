@@ -235,13 +235,14 @@ void draw_help() {
 UiRequests draw_ui(UiContext& ui) {
   UiRequests requests;
   ViewerState& state = ui.core.state();
-  if (ui.state) draw_overlays(ui.core.camera(), ui.world, *ui.state, state.toggles);
+  if (ui.state) draw_overlays(ui.core.camera(), ui.world, *ui.state, state.toggles, state.settings.shadow_eta);
   if (state.toggles.hud) draw_hud(ui, requests);
   draw_playback(ui, requests);
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos({display.x - kSettingsWidth - 8, 8}, ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize({kSettingsWidth, std::max(display.y - 16, 100.0f)}, ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowBgAlpha(0.7f);
+  ImGui::SetNextWindowCollapsed(display.x < 800.0f, ImGuiCond_FirstUseEver);  // small windows: the frame first
   ImGui::Begin("Settings");
   if (ImGui::CollapsingHeader("render", ImGuiTreeNodeFlags_DefaultOpen)) draw_settings(ui);
   if (ImGui::CollapsingHeader("scene", ImGuiTreeNodeFlags_DefaultOpen) && ui.scene) draw_scene_panel(ui, requests);
@@ -249,6 +250,22 @@ UiRequests draw_ui(UiContext& ui) {
     ImGui::Checkbox("proxies (O)", &state.toggles.proxies);
     ImGui::Checkbox("skeleton (B)", &state.toggles.bones);
     ImGui::Checkbox("grid (G)", &state.toggles.grid);
+    ImGui::Checkbox("influence shells (eta r)", &state.toggles.shells);
+    // Selecting a joint highlights its spheres (the bones that carry proxies, per model).
+    const std::string none = "(no joint selected)";
+    if (ui.world && ImGui::BeginCombo("joint", state.toggles.selected_bone.empty() ? none.c_str() : state.toggles.selected_bone.c_str())) {
+      if (ImGui::Selectable(none.c_str(), state.toggles.selected_bone.empty())) state.toggles.selected_bone.clear();
+      std::vector<std::string> bones;
+      for (const auto& model : ui.world->models())
+        for (const auto& sphere : model->rig.spheres)
+          if (std::find(bones.begin(), bones.end(), sphere.bone) == bones.end()) bones.push_back(sphere.bone);
+      for (const std::string& bone : bones)
+        if (ImGui::Selectable(bone.c_str(), bone == state.toggles.selected_bone)) {
+          state.toggles.selected_bone = bone;
+          state.toggles.proxies = true;
+        }
+      ImGui::EndCombo();
+    }
   }
   ImGui::End();
   if (!ui.hud.loading.empty() || !state.message.empty() || !state.notice.empty()) {
