@@ -25,6 +25,17 @@ std::string_view loop_mode_name(LoopMode mode) {
   return "?";
 }
 
+std::string_view view_name(View view) {
+  switch (view) {
+    case View::final: return "final";
+    case View::albedo: return "albedo";
+    case View::normals: return "normals";
+    case View::irradiance: return "irradiance (direct + indirect)";
+    case View::receivers: return "receivers at 1/k";
+  }
+  return "?";
+}
+
 int Playback::frame() const {
   return std::clamp(int(std::lround(time_s * fps)), first_frame, last_frame);
 }
@@ -171,7 +182,7 @@ void ViewerCore::handle_key(const KeyEvent& event) {
     case Key::w: toggles.wireframe = !toggles.wireframe; break;
     case Key::g: toggles.grid = !toggles.grid; break;
     case Key::h: toggles.hud = !toggles.hud; break;
-    case Key::v: break;  // views: reserved
+    case Key::v: state_.view = View((int(state_.view) + (shift ? kViewCount - 1 : 1)) % kViewCount); break;
     case Key::f1: toggles.help = !toggles.help; break;
     case Key::f10: toggles.ui = !toggles.ui; break;
     case Key::f12: requests_.push_back(ScreenshotEvent{"", !ctrl}); break;

@@ -57,6 +57,12 @@ struct FreeCamera {
   static FreeCamera from(const scene::CameraState& camera);
 };
 
+// What the frame shows (V cycles): the final frame or one of its inputs (the composite pass's
+// gpu_layout::kDebugView* in the same order).
+enum class View { final, albedo, normals, irradiance, receivers };
+inline constexpr int kViewCount = 5;
+std::string_view view_name(View view);
+
 struct Toggles {
   bool ui = true;       // F10: the whole UI
   bool hud = true;      // H
@@ -75,6 +81,7 @@ struct ViewerState {
   FreeCamera camera;
   Toggles toggles;
   settings::RenderSettings settings;
+  View view = View::final;
   std::string message;  // the last error (a file that failed to open, a bad setting), shown until dismissed
   std::string notice;   // the last notice (screenshot written, scene saved)
 };

@@ -89,6 +89,7 @@ Status Viewer::write_state() const {
   json["camera"] = {{"eye", {camera.eye.x, camera.eye.y, camera.eye.z}},
                     {"target", {camera.target.x, camera.target.y, camera.target.z}}};
   for (const settings::Field& field : settings::fields()) json["settings"][std::string(field.key)] = field.get(state.settings);
+  json["view"] = std::string(view_name(state.view));
   json["message"] = state.message;
   json["notice"] = state.notice;
   json["frames"] = frames_;

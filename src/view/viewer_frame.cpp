@@ -82,6 +82,7 @@ Status Viewer::render_into(const TargetImage& target) {
   gpu::FrameRequest request;
   request.state = &state_;
   request.frame = core_->state().playback.frame();
+  request.debug_view = std::uint32_t(core_->state().view);
   request.output = gpu::FrameOutput::into({target.image, target.format, target.width, target.height,
                                            VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
   // Frames in flight: the next frame is prepared on the CPU while the device still renders the

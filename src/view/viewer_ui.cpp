@@ -41,7 +41,7 @@ constexpr const char* kKeyMap[][2] = {
     {"step -1 / +1 frame (pauses)", "Left / Right"}, {"step -10 / +10 frames", "Down / Up"},
     {"jump to start / end", "Shift+Left / Shift+Right (End)"}, {"speed - / + / reset", "- / = / Backspace"},
     {"loop-once / ping-pong", "L / P"},         {"screenshot (with UI / without)", "F12 / Ctrl+F12"},
-    {"bones, proxies, wireframe, grid", "B, O, W, G"}, {"HUD / whole UI", "H / F10"},
+    {"bones, proxies, wireframe, grid", "B, O, W, G"}, {"next / previous view", "V / Shift+V"}, {"HUD / whole UI", "H / F10"},
     {"help / quit", "F1 / Esc"},
 };
 
@@ -246,6 +246,13 @@ UiRequests draw_ui(UiContext& ui) {
   ImGui::Begin("Settings");
   if (ImGui::CollapsingHeader("render", ImGuiTreeNodeFlags_DefaultOpen)) draw_settings(ui);
   if (ImGui::CollapsingHeader("scene", ImGuiTreeNodeFlags_DefaultOpen) && ui.scene) draw_scene_panel(ui, requests);
+  if (ImGui::CollapsingHeader("view", ImGuiTreeNodeFlags_DefaultOpen)) {
+    int view = int(state.view);
+    for (int v = 0; v < kViewCount; ++v) {
+      if (ImGui::RadioButton(std::string(view_name(View(v))).c_str(), &view, v)) state.view = View(v);
+      if (v % 2 == 0 && v + 1 < kViewCount) ImGui::SameLine();
+    }
+  }
   if (ImGui::CollapsingHeader("overlays")) {
     ImGui::Checkbox("proxies (O)", &state.toggles.proxies);
     ImGui::Checkbox("skeleton (B)", &state.toggles.bones);

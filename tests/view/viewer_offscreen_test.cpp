@@ -109,5 +109,26 @@ TEST_F(ViewerOffscreenTest, SavedSceneRecordsTheFrameOnScreen) {
   expect_within_one_code(run.shots.at("seen.png"), record_frame(context(), *scene, kSize, kSize, 10), "save", "seen");
 }
 
+TEST_F(ViewerOffscreenTest, ViewsShowTheFramesInputsAndCycleBackToTheFinalFrame) {
+  const auto run = run_viewer_script(R"({"events": [
+      {"t": 0, "key": "up"}, {"t": 0, "screenshot": "final.png", "ui": false},
+      {"t": 0, "key": "v"}, {"t": 0, "screenshot": "albedo.png", "ui": false},
+      {"t": 0, "key": "v"}, {"t": 0, "screenshot": "normals.png", "ui": false},
+      {"t": 0, "key": "v"}, {"t": 0, "screenshot": "irradiance.png", "ui": false},
+      {"t": 0, "key": "v"}, {"t": 0, "screenshot": "receivers.png", "ui": false},
+      {"t": 0, "key": "v"}, {"t": 0, "screenshot": "again.png", "ui": false}]})",
+                                     "default", kSize, kSize, true, "views");
+  ASSERT_TRUE(run.status.ok()) << run.status.message();
+  ASSERT_EQ(run.shots.size(), 6u);
+  const auto& final_frame = run.shots.at("final.png").rgba;
+  for (const char* view : {"albedo.png", "normals.png", "irradiance.png", "receivers.png"})
+    EXPECT_GT(max_code_difference(run.shots.at(view).rgba, final_frame), 16) << view;
+  // Receivers at 1/4 (no upsampling) differ from the upsampled irradiance.
+  EXPECT_GT(max_code_difference(run.shots.at("receivers.png").rgba, run.shots.at("irradiance.png").rgba), 4);
+  expect_within_one_code(run.shots.at("again.png"), record_frame(context(), scene::default_scene(), kSize, kSize, 10),
+                         "views", "again");
+  EXPECT_EQ(run.state["view"], "final");
+}
+
 }  // namespace
 }  // namespace proxygi::view
