@@ -31,7 +31,14 @@ Status evaluate_pose(const Character& character, int clip, float time, WrapMode 
     sample.morph_weights = pose.morph_weights;
     if (Status status = sample.run(); !status) return make_error(character.source + ": " + status.message());
   }
+  return pose_from_locals(character, pose, root_transform);
+}
 
+Status pose_from_locals(const Character& character, PoseBuffers& pose, const glm::mat4& root_transform) {
+  if (pose.locals.size() != character.nodes.size())
+    return make_error(character.source + ": pose_from_locals: " + std::to_string(pose.locals.size()) + " locals for " +
+                      std::to_string(character.nodes.size()) + " nodes");
+  pose.world.resize(character.nodes.size());
   LocalToModelJob to_model;
   to_model.character = &character;
   to_model.locals = pose.locals;

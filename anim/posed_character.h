@@ -30,6 +30,10 @@ struct PoseBuffers {
 Status evaluate_pose(const Character& character, int clip, float time, WrapMode wrap,
                      PoseBuffers& pose, const glm::mat4& root_transform = glm::mat4(1.0f));
 
+// The second half of evaluate_pose: world, skin and normal matrices from pose.locals (and
+// pose.morph_weights) already filled in, e.g. by blending two sampled clips (blending.h).
+Status pose_from_locals(const Character& character, PoseBuffers& pose, const glm::mat4& root_transform = glm::mat4(1.0f));
+
 // One primitive of one mesh instance, in world space.
 struct PosedPrimitive {
   std::string name;  // "<node name>/<mesh name>/<primitive index>"

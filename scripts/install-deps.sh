@@ -17,6 +17,8 @@ packages=(
   xvfb xauth xdotool
   # video output and charts (matplotlib is called as /usr/bin/python3)
   ffmpeg python3-numpy python3-matplotlib
+  # regression reports in a real browser (label browser), a local Slurm cluster (label slurm)
+  chromium slurm-wlm munge
 )
 
 missing=()

@@ -2,7 +2,8 @@
 // Internal to the scene library: typed, path-tracking reads from nlohmann::json. Every read
 // names the field path ("characters[1].clip") and every object rejects keys nobody read, so a
 // typo fails loudly instead of silently taking a default. Errors are thrown as FieldError and
-// turned into a Result at the parse_scene boundary; nothing here escapes the library.
+// turned into a Result at the parse_scene boundary; nothing here escapes the library (the
+// regression scenario parser, src/regress/scenario.cpp, reads its files with the same reader).
 #include <cstddef>
 #include <optional>
 #include <set>

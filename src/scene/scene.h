@@ -28,8 +28,11 @@
 
 namespace proxygi::scene {
 
-// The only schema version this build reads and writes. Bump it on any incompatible change.
-inline constexpr int kSchemaVersion = 1;
+// The newest schema version this build reads and writes. Version 2 adds per-character clip
+// timelines (Character::timeline); version 1 files still load (kMinSchemaVersion), and a scene
+// without timelines is written as version 1 so older files round-trip unchanged.
+inline constexpr int kSchemaVersion = 2;
+inline constexpr int kMinSchemaVersion = 1;
 inline constexpr std::string_view kBuiltinMannequin = "builtin:mannequin";
 
 // Rotation in one of two forms, kept as written so files round-trip.
@@ -75,6 +78,29 @@ struct WalkPath {
 // A clip is named (glTF animation name) or indexed (glTF animation index, >= 0).
 using ClipRef = std::variant<std::string, int>;
 
+// One segment of a character's clip timeline (schema version 2). From scene time `start_s` the
+// segment plays `clip` at clip time clip_offset_s + speed * (t - start_s), wrapped by `mode`
+// (loop: modulo the clip duration; once: clamped to it; ping_pong: forward then backward).
+// It lasts `duration_s` seconds, or `repeat` passes through the clip (repeat * clip duration /
+// speed; a ping-pong pass is there and back). Give one of the two. `crossfade_s` > 0 blends
+// this segment into the next over the first crossfade_s seconds of the next one (anim::BlendJob,
+// weight (t - next.start) / crossfade_s); the outgoing segment keeps playing by its mode
+// meanwhile. Before the first segment the character holds its first pose; in a gap and after the
+// last segment it holds the previous segment's end pose. Segments are ordered by start and may
+// not overlap (a segment's end, start + length, must be <= the next start); see world/timeline.h.
+struct ClipSegment {
+  enum class Mode { loop, once, ping_pong };
+  ClipRef clip{std::in_place_type<int>, 0};
+  double start_s = 0.0;                 // scene seconds, >= 0
+  std::optional<double> duration_s;     // seconds, > 0
+  std::optional<int> repeat;            // passes, >= 1
+  float speed = 1.0f;                   // clip seconds per scene second, > 0
+  float clip_offset_s = 0.0f;           // clip time at the segment's start, >= 0
+  Mode mode = Mode::loop;
+  float crossfade_s = 0.0f;             // >= 0; must be 0 on the last segment
+  bool operator==(const ClipSegment&) const = default;
+};
+
 struct Character {
   std::string model;  // glTF/GLB path relative to the scene folder, or "builtin:mannequin"
   ClipRef clip{std::in_place_type<int>, 0};
@@ -85,6 +111,9 @@ struct Character {
   // next to the model (default_proxy_path).
   std::optional<std::string> proxies;
   std::optional<WalkPath> path;
+  // Schema version 2: clip segments over scene time. When non-empty it replaces clip, speed and
+  // time_offset (which the file may then not give).
+  std::vector<ClipSegment> timeline;
   bool operator==(const Character&) const = default;
 };
 

@@ -15,6 +15,10 @@ inline constexpr Name<WalkPath::Repeat> kRepeat[] = {
     {"none", WalkPath::Repeat::none},
     {"loop", WalkPath::Repeat::loop},
     {"ping_pong", WalkPath::Repeat::ping_pong}};
+inline constexpr Name<ClipSegment::Mode> kSegmentMode[] = {
+    {"loop", ClipSegment::Mode::loop},
+    {"once", ClipSegment::Mode::once},
+    {"ping_pong", ClipSegment::Mode::ping_pong}};
 inline constexpr Name<Environment::Type> kEnvironmentType[] = {
     {"sky", Environment::Type::sky}, {"map", Environment::Type::map}};
 inline constexpr Name<KeyframedCamera::Interpolation> kInterpolation[] = {

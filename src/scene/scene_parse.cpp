@@ -60,19 +60,46 @@ WalkPath read_walk_path(const json& value, const std::string& path) {
   return p;
 }
 
-Character read_character(const json& value, const std::string& path) {
+ClipRef read_clip(const json& clip, const std::string& path) {
+  if (clip.is_string()) return clip.get<std::string>();
+  if (clip.is_number_integer()) return detail::read_int(clip, path);
+  fail(path, "expected a string or an integer");
+}
+
+ClipSegment read_segment(const json& value, const std::string& path) {
+  ObjectReader r(value, path);
+  ClipSegment s;
+  s.clip = read_clip(r.require("clip"), r.field("clip"));
+  s.start_s = detail::read_double(r.require("start"), r.field("start"));
+  const json* duration = r.get("duration");
+  const json* repeat = r.get("repeat");
+  if (duration != nullptr && repeat != nullptr) fail(r.field("repeat"), "give duration or repeat, not both");
+  if (duration == nullptr && repeat == nullptr) fail(r.field("duration"), "give duration (seconds) or repeat (passes)");
+  if (duration != nullptr) s.duration_s = detail::read_double(*duration, r.field("duration"));
+  if (repeat != nullptr) s.repeat = detail::read_int(*repeat, r.field("repeat"));
+  s.speed = r.number("speed", s.speed);
+  s.clip_offset_s = r.number("clip_offset", s.clip_offset_s);
+  s.mode = r.enumeration("mode", s.mode, names::kSegmentMode);
+  s.crossfade_s = r.number("crossfade", s.crossfade_s);
+  r.finish();
+  return s;
+}
+
+Character read_character(const json& value, const std::string& path, int version) {
   ObjectReader r(value, path);
   Character c;
   c.model = detail::read_string(r.require("model"), r.field("model"));
-  if (const json* clip = r.get("clip")) {
-    if (clip->is_string()) {
-      c.clip = clip->get<std::string>();
-    } else if (clip->is_number_integer()) {
-      c.clip = detail::read_int(*clip, r.field("clip"));
-    } else {
-      fail(r.field("clip"), "expected a string or an integer");
-    }
+  if (const json* timeline = r.get("timeline")) {
+    const std::string timeline_path = r.field("timeline");
+    if (version < 2) fail(timeline_path, "needs schema_version 2 (this file is version " + std::to_string(version) + ")");
+    for (const char* key : {"clip", "speed", "time_offset"})
+      if (r.has(key)) fail(r.field(key), "not allowed with a timeline (give it per segment)");
+    detail::expect_array(*timeline, timeline_path);
+    if (timeline->empty()) fail(timeline_path, "needs at least one segment");
+    for (std::size_t i = 0; i < timeline->size(); ++i)
+      c.timeline.push_back(read_segment((*timeline)[i], detail::index_path(timeline_path, i)));
   }
+  if (const json* clip = r.get("clip")) c.clip = read_clip(*clip, r.field("clip"));
   c.speed = r.number("speed", c.speed);
   c.time_offset_s = r.number("time_offset", c.time_offset_s);
   if (const json* t = r.get("transform")) c.transform = read_transform(*t, r.field("transform"));
@@ -268,17 +295,21 @@ Scene read_scene(const json& document) {
   ObjectReader r(document, "");
   const json& version = r.require("schema_version");
   if (!version.is_number_integer()) fail("schema_version", "expected an integer");
-  if (version.is_number_unsigned() ? version.get<std::uint64_t>() != static_cast<std::uint64_t>(kSchemaVersion)
-                                   : version.get<std::int64_t>() != kSchemaVersion) {
-    fail("schema_version", "unsupported version " + version.dump() + " (this build reads version " +
-                               std::to_string(kSchemaVersion) + ")");
+  const bool in_range = version.is_number_unsigned()
+                            ? version.get<std::uint64_t>() >= std::uint64_t(kMinSchemaVersion) &&
+                                  version.get<std::uint64_t>() <= std::uint64_t(kSchemaVersion)
+                            : version.get<std::int64_t>() >= kMinSchemaVersion && version.get<std::int64_t>() <= kSchemaVersion;
+  if (!in_range) {
+    fail("schema_version", "unsupported version " + version.dump() + " (this build reads versions " +
+                               std::to_string(kMinSchemaVersion) + " to " + std::to_string(kSchemaVersion) + ")");
   }
+  const int schema = int(version.get<std::int64_t>());
   Scene scene;
   scene.description = r.string("description", scene.description);
   if (const json* characters = r.get("characters")) {
     detail::expect_array(*characters, "characters");
     for (std::size_t i = 0; i < characters->size(); ++i) {
-      scene.characters.push_back(read_character((*characters)[i], detail::index_path("characters", i)));
+      scene.characters.push_back(read_character((*characters)[i], detail::index_path("characters", i), schema));
     }
   }
   if (const json* e = r.get("environment")) scene.environment = read_environment(*e, "environment");

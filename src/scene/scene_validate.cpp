@@ -96,7 +96,36 @@ void validate_transform(const Transform& t, const std::string& path) {
   for (int i = 0; i < 3; ++i) positive(t.scale[i], join_path(path, "scale"));
 }
 
+// What the file alone can say about a timeline; World::load checks repeat-count lengths against
+// the clips (world/timeline.h), since those need the clip durations.
+void validate_timeline(const std::vector<ClipSegment>& timeline, const std::string& path) {
+  for (std::size_t i = 0; i < timeline.size(); ++i) {
+    const ClipSegment& s = timeline[i];
+    const std::string p = index_path(path, i);
+    if (const auto* name = std::get_if<std::string>(&s.clip)) non_empty(*name, join_path(p, "clip"));
+    else if (std::get<int>(s.clip) < 0) fail(join_path(p, "clip"), "clip index must be >= 0 (got " + std::to_string(std::get<int>(s.clip)) + ")");
+    if (!std::isfinite(s.start_s) || s.start_s < 0.0) fail(join_path(p, "start"), "must be >= 0 (got " + show(s.start_s) + ")");
+    if (s.duration_s && !(std::isfinite(*s.duration_s) && *s.duration_s > 0.0))
+      fail(join_path(p, "duration"), "must be > 0 (got " + show(*s.duration_s) + ")");
+    if (s.repeat && *s.repeat < 1) fail(join_path(p, "repeat"), "must be >= 1 (got " + std::to_string(*s.repeat) + ")");
+    positive(s.speed, join_path(p, "speed"));
+    if (!std::isfinite(s.clip_offset_s) || s.clip_offset_s < 0.0f) fail(join_path(p, "clip_offset"), "must be >= 0 (got " + show(s.clip_offset_s) + ")");
+    if (!std::isfinite(s.crossfade_s) || s.crossfade_s < 0.0f) fail(join_path(p, "crossfade"), "must be >= 0 (got " + show(s.crossfade_s) + ")");
+    if (i + 1 == timeline.size() && s.crossfade_s > 0.0f) fail(join_path(p, "crossfade"), "the last segment has nothing to fade into");
+    if (i == 0) continue;
+    const ClipSegment& previous = timeline[i - 1];
+    if (s.start_s < previous.start_s)
+      fail(join_path(p, "start"), "segments must be ordered by start (" + show(s.start_s) + " < " + show(previous.start_s) + ")");
+    if (previous.duration_s && previous.start_s + *previous.duration_s > s.start_s + 1e-9)
+      fail(join_path(p, "start"), "overlaps " + index_path(path, i - 1) + " (which ends at " +
+                                      show(previous.start_s + *previous.duration_s) + ", this starts at " + show(s.start_s) + ")");
+    if (s.duration_s && previous.crossfade_s > *s.duration_s)
+      fail(join_path(index_path(path, i - 1), "crossfade"), "longer than the next segment (" + show(*s.duration_s) + " s)");
+  }
+}
+
 void validate_character(const Character& c, const std::string& path) {
+  validate_timeline(c.timeline, join_path(path, "timeline"));
   non_empty(c.model, join_path(path, "model"));
   if (const auto* name = std::get_if<std::string>(&c.clip)) {
     non_empty(*name, join_path(path, "clip"));

@@ -45,16 +45,35 @@ ojson transform_json(const Transform& t) {
   return j;
 }
 
+ojson clip_json(const ClipRef& clip) {
+  if (const auto* name = std::get_if<std::string>(&clip)) return *name;
+  return std::get<int>(clip);
+}
+
+ojson segment_json(const ClipSegment& s) {
+  ojson j = ojson::object();
+  j["clip"] = clip_json(s.clip);
+  j["start"] = s.start_s;
+  if (s.duration_s) j["duration"] = *s.duration_s;
+  if (s.repeat) j["repeat"] = *s.repeat;
+  j["speed"] = number(s.speed);
+  j["clip_offset"] = number(s.clip_offset_s);
+  j["mode"] = std::string(names::name_of(names::kSegmentMode, s.mode));
+  j["crossfade"] = number(s.crossfade_s);
+  return j;
+}
+
 ojson character_json(const Character& c) {
   ojson j = ojson::object();
   j["model"] = c.model;
-  if (const auto* name = std::get_if<std::string>(&c.clip)) {
-    j["clip"] = *name;
+  if (!c.timeline.empty()) {
+    j["timeline"] = ojson::array();
+    for (const ClipSegment& s : c.timeline) j["timeline"].push_back(segment_json(s));
   } else {
-    j["clip"] = std::get<int>(c.clip);
+    j["clip"] = clip_json(c.clip);
+    j["speed"] = number(c.speed);
+    j["time_offset"] = number(c.time_offset_s);
   }
-  j["speed"] = number(c.speed);
-  j["time_offset"] = number(c.time_offset_s);
   j["transform"] = transform_json(c.transform);
   if (c.proxies) j["proxies"] = *c.proxies;
   if (c.path) {
@@ -193,7 +212,10 @@ void print(const ojson& j, int indent, std::string& out) {
 Result<std::string> to_json(const Scene& scene) {
   if (Status valid = validate_scene(scene); !valid) return make_error("to_json: " + valid.message());
   ojson j = ojson::object();
-  j["schema_version"] = kSchemaVersion;
+  // Version 1 unless a character has a timeline, so version-1 scenes write back unchanged.
+  const bool timelines = std::any_of(scene.characters.begin(), scene.characters.end(),
+                                     [](const Character& c) { return !c.timeline.empty(); });
+  j["schema_version"] = timelines ? kSchemaVersion : kMinSchemaVersion;
   j["description"] = scene.description;
   j["characters"] = ojson::array();
   for (const Character& c : scene.characters) j["characters"].push_back(character_json(c));

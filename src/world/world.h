@@ -40,6 +40,7 @@
 #include "render/shading.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
+#include "world/timeline.h"
 
 namespace proxygi::world {
 
@@ -64,6 +65,7 @@ struct CharacterInstance {
   std::size_t model_index = 0;      // index of *model in World::models() (per-model data of users)
   std::size_t scene_character = 0;  // index into scene.characters
   int clip = -1;                     // resolved clip index, -1: rest pose
+  ResolvedTimeline timeline;         // schema v2 clip segments (world/timeline.h); empty: `clip`
 };
 
 // A static mesh of the scene, posed once: world-space primitives (anim::pose_meshes) of its model.

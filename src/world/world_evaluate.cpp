@@ -24,8 +24,12 @@ Status World::evaluate(double scene_time_s, const std::optional<scene::CameraSta
     const scene::Character& entry = scene_.characters[instance.scene_character];
     InstanceState& out = state.instances[index];
     const float clip_time = float(scene::clip_time_s(entry, t));
-    if (Status posed = anim::evaluate_pose(instance.model->character, instance.clip, clip_time, anim::WrapMode::loop,
-                                           out.pose, scene::character_world_matrix(entry, t));
+    const glm::mat4 root = scene::character_world_matrix(entry, t);
+    if (Status posed = instance.timeline.empty()
+                           ? anim::evaluate_pose(instance.model->character, instance.clip, clip_time, anim::WrapMode::loop,
+                                                 out.pose, root)
+                           : evaluate_timeline_pose(instance.model->character, sample_timeline(instance.timeline, t),
+                                                    out.pose, root);
         !posed)
       return make_error("characters[" + std::to_string(instance.scene_character) + "]: " + posed.message());
     out.spheres.resize(instance.model->tracking.spheres.size());

@@ -149,6 +149,9 @@ Result<std::unique_ptr<World>> World::load(const scene::Scene& scene, const Worl
     auto clip = resolve_clip(instance.model->character, entry.clip);
     if (!clip) return make_error(where + ".clip: " + clip.message());
     instance.clip = *clip;
+    auto timeline = resolve_timeline(instance.model->character, entry.timeline, where + ".timeline");
+    if (!timeline) return make_error(timeline.message());
+    instance.timeline = std::move(*timeline);
     world->instances_.push_back(instance);
   }
 

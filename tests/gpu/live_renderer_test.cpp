@@ -113,7 +113,8 @@ TEST_F(LiveRendererTest, SceneTimeRendersTheFrameAndItsGolden) {
     ASSERT_TRUE(by_frame.ok()) << by_frame.message();
     expect_same_frame(*by_time, *by_frame, "frame " + std::to_string(frame));
     auto golden = run::compare_with_golden(by_time->ldr, 256, 256,
-                                           PROXYGI_SOURCE_DIR "/tests/golden/default_256_frame" + std::to_string(frame) + ".png");
+                                           PROXYGI_SOURCE_DIR "/tests/regress/goldens/golden_default_256/llvmpipe/frame/frame_000" +
+                                               std::string(frame < 10 ? "0" : "") + std::to_string(frame) + ".png");
     ASSERT_TRUE(golden.ok()) << golden.message();
     EXPECT_TRUE(golden->passed) << golden->failing_pixels << " pixels beyond 5/255";
     if (reference_driver) {

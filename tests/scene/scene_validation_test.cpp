@@ -31,7 +31,7 @@ struct Case {
 
 const Case kCases[] = {
     // Schema version and document shape.
-    {R"({"schema_version": 2})", "{}", "schema_version: unsupported version 2 (this build reads version 1)"},
+    {R"({"schema_version": 3})", "{}", "schema_version: unsupported version 3 (this build reads versions 1 to 2)"},
     {R"({"schema_version": null})", "{}", "schema_version: required field is missing"},
     {R"({"schema_version": "1"})", "{}", "schema_version: expected an integer"},
     {R"({"camrea": {}})", "{}", "camrea: unknown key (did you mean \"camera\"?)"},

@@ -1,0 +1,33 @@
+# --bless writes only the named checks, a missing golden fails as "new" with its bless command,
+# and a family without goldens falls back to the "any" tier. -DPROXYGI=... -DSOURCE=... -DWORK=...
+file(REMOVE_RECURSE ${WORK})
+file(COPY ${SOURCE}/tests/regress/goldens/walk DESTINATION ${WORK}/goldens)
+file(REMOVE_RECURSE ${WORK}/goldens/walk/llvmpipe/frame ${WORK}/goldens/walk/llvmpipe/ground)
+set(walk ${SOURCE}/tests/regress/walk.json)
+function(regress expect_code out_var)
+  execute_process(COMMAND ${PROXYGI} regress ${walk} --goldens ${WORK}/goldens --filter walk/frame --filter walk/ground
+                  --filter walk/tracks ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT code EQUAL ${expect_code})
+    message(FATAL_ERROR "regress ${ARGN}: exit ${code}, expected ${expect_code}\n${out}\n${err}")
+  endif()
+  set(${out_var} "${out}" PARENT_SCOPE)
+endfunction()
+regress(1 out)
+if(NOT out MATCHES "new      walk/frame" OR NOT out MATCHES "bless: proxygi regress [^\n]*walk.json --bless walk/ground")
+  message(FATAL_ERROR "missing goldens not reported as new with a bless command:\n${out}")
+endif()
+regress(1 out --bless walk/ground)  # walk/frame still has no golden
+if(NOT out MATCHES "frame 30: new golden")
+  message(FATAL_ERROR "bless did not say what it wrote:\n${out}")
+endif()
+if(NOT EXISTS ${WORK}/goldens/walk/llvmpipe/ground/frame_00030.png OR EXISTS ${WORK}/goldens/walk/llvmpipe/frame)
+  message(FATAL_ERROR "--bless walk/ground wrote more or less than walk/ground")
+endif()
+# The fallback tier: the family's folder moved to "any" passes, compared against the any tier.
+file(REMOVE_RECURSE ${WORK}/goldens/walk/llvmpipe/frame)
+regress(0 out --bless walk/frame)
+file(RENAME ${WORK}/goldens/walk/llvmpipe ${WORK}/goldens/walk/any)
+regress(0 out)
+if(NOT out MATCHES "pass     walk/frame")
+  message(FATAL_ERROR "the any tier was not used:\n${out}")
+endif()
