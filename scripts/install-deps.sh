@@ -13,6 +13,8 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers glslang-tools spirv-tools vulkan-validationlayers vulkan-tools
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
+  # the viewer's window tests: an X server of their own, real input events
+  xvfb xauth xdotool
   # video output and charts (matplotlib is called as /usr/bin/python3)
   ffmpeg python3-numpy python3-matplotlib
   # regression reports in a real browser (label browser), a local Slurm cluster (label slurm)

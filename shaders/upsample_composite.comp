@@ -95,6 +95,13 @@ vec3 upsampled_irradiance(uvec2 pixel, float depth) {
   return weight_sum > 1e-6 * max(bilinear_sum, 1e-30) ? total / weight_sum : nearest_value;
 }
 
+// The shading of the receiver whose block holds this pixel (the 1/k grid as it is).
+vec3 nearest_receiver(uvec2 pixel) {
+  ivec2 receiver_size = ivec2(frame.receiver_width, frame.receiver_height);
+  ivec2 source = clamp(ivec2(pixel) / int(frame.receiver_scale), ivec2(0), receiver_size - 1);
+  return shaded[uint(source.y * receiver_size.x + source.x)].rgb;
+}
+
 void main() {
   uvec2 pixel = gl_GlobalInvocationID.xy;
   uvec2 display_size = uvec2(frame.display_width, frame.display_height);
@@ -102,8 +109,9 @@ void main() {
   uint index = pixel.y * display_size.x + pixel.x;
   vec4 position_depth = imageLoad(position_depth_image, ivec2(pixel));
   vec3 radiance;
+  vec3 e = vec3(0.0);
   if (position_depth.w > 0.0) {
-    vec3 e = frame.composite_mode == kCompositeDisplayIrradiance ? imageLoad(normal_image, ivec2(pixel)).rgb
+    e = frame.composite_mode == kCompositeDisplayIrradiance ? imageLoad(normal_image, ivec2(pixel)).rgb
                                                            : upsampled_irradiance(pixel, position_depth.w);
     irradiance[index] = vec4(e, 1.0);
     radiance = imageLoad(albedo_image, ivec2(pixel)).rgb / kPi * e;
@@ -114,8 +122,18 @@ void main() {
     vec3 direction = normalize(far_point.xyz / far_point.w - frame.eye_position.xyz);
     radiance = environment_radiance(direction);
   }
+  vec3 display;
+  if (frame.debug_view != kDebugViewFinal && position_depth.w > 0.0) {  // the viewer's views
+    uint view = frame.debug_view;
+    if (view == kDebugViewAlbedo) display = imageLoad(albedo_image, ivec2(pixel)).rgb;
+    else if (view == kDebugViewNormals) display = 0.5 + 0.5 * imageLoad(normal_image, ivec2(pixel)).xyz;
+    else if (view == kDebugViewIrradiance) display = tonemap(e / kPi);
+    else display = tonemap(nearest_receiver(pixel) / kPi);
+    radiance = display;
+  } else {
+    display = tonemap(radiance);
+  }
   hdr[index] = vec4(radiance, 1.0);
-  vec3 display = tonemap(radiance);
   uvec3 encoded = uvec3(clamp(vec3(linear_to_srgb(display.r), linear_to_srgb(display.g), linear_to_srgb(display.b)), 0.0, 1.0) * 255.0 + 0.5);
   ldr[index] = encoded.r | (encoded.g << 8) | (encoded.b << 16) | (255u << 24);
 }

@@ -90,6 +90,10 @@ struct FrameConstants {
   uint tonemap;                  // kTonemapAces, kTonemapReinhard or kTonemapClamp
   float bilateral_depth_epsilon; // ε of eq. 11 (m)
   uint indirect_enabled;         // 0: no bounce light
+  uint debug_view;               // kDebugView*: what the composite writes (the viewer's views)
+  uint padding_debug0;
+  uint padding_debug1;
+  uint padding_debug2;
   vec4 irradiance_sh[3u * kIndirectOrder * kIndirectOrder];  // L̃ = L * clamped cosine, order 3, r then g then b; x used
 };
 
@@ -99,6 +103,12 @@ PROXYGI_CONST(uint, kCompositeBilinear, 1u);
 // The vertex method: the G-buffer's second target already holds the interpolated irradiance
 // (gbuffer.frag with VERTEX_IRRADIANCE writes it there, not the normal).
 PROXYGI_CONST(uint, kCompositeDisplayIrradiance, 2u);
+// FrameConstants::debug_view: the final frame, or one of its inputs in place of the radiance.
+PROXYGI_CONST(uint, kDebugViewFinal, 0u);
+PROXYGI_CONST(uint, kDebugViewAlbedo, 1u);      // G-buffer albedo, as display values
+PROXYGI_CONST(uint, kDebugViewNormals, 2u);     // G-buffer normal, 0.5 + 0.5 n
+PROXYGI_CONST(uint, kDebugViewIrradiance, 3u);  // E/π (direct + indirect light on white), tonemapped
+PROXYGI_CONST(uint, kDebugViewReceivers, 4u);   // the nearest receiver's E/π, no upsampling: 1/k blocks
 // FrameConstants::tonemap.
 PROXYGI_CONST(uint, kTonemapAces, 0u);
 PROXYGI_CONST(uint, kTonemapReinhard, 1u);
@@ -227,8 +237,8 @@ PROXYGI_CONST(uint, kResolveBindFirstTarget, 2u);
 #ifdef __cplusplus
 static_assert(sizeof(TestPatternPush) == 16);
 static_assert(sizeof(ProxySphere) == 32);
-static_assert(sizeof(FrameConstants) == 128 + 16 * 7 + 16 * 27);
-static_assert(offsetof(FrameConstants, display_width) == 160 && offsetof(FrameConstants, irradiance_sh) == 240);
+static_assert(sizeof(FrameConstants) == 128 + 16 * 8 + 16 * 27);
+static_assert(offsetof(FrameConstants, display_width) == 160 && offsetof(FrameConstants, irradiance_sh) == 256);
 static_assert(sizeof(GbufferPush) == 64);
 static_assert(sizeof(Receiver) == 32);
 static_assert(sizeof(CompositePush) == 16);

@@ -176,6 +176,7 @@ Result<std::vector<DrawItem>> SceneRenderer::prepare(const FrameRequest& request
   view.projection = scene::projection_matrix(camera, aspect);
   view.eye = camera.eye;
   view.forward = glm::normalize(camera.target - camera.eye);
+  view.debug_view = request.debug_view;
   if (Status written = frame_->write_slot(slot, view, state->spheres); !written) return written.error();
 
   SlotState& current = slots_[slot];

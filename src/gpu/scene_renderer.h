@@ -56,6 +56,7 @@ struct FrameRequest {
   std::optional<scene::CameraState> camera;  // another camera than the scene's
   const world::WorldState* state = nullptr;  // when set, rendered as it is (time_s and camera unused)
   int frame = -1;                            // the scene frame this is (bookkeeping), -1: none
+  std::uint32_t debug_view = 0;              // gpu_layout::kDebugView*: an input shown instead (viewer)
   FrameOutput output = FrameOutput::readback();
 };
 

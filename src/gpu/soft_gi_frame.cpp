@@ -98,6 +98,7 @@ Status SoftGiFrame::write_slot(std::uint32_t slot, const FrameView& view, std::s
   constants.inverse_view_projection = glm::inverse(constants.view_projection);
   constants.eye_position = glm::vec4(view.eye, 1.0f);
   constants.eye_forward = glm::vec4(glm::normalize(view.forward), 0.0f);
+  constants.debug_view = view.debug_view;
   constants.display_width = config_.width;
   constants.display_height = config_.height;
   constants.receiver_width = config_.receiver_width();

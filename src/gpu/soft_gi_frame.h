@@ -38,6 +38,7 @@ struct FrameView {
   glm::mat4 projection{1.0f};
   glm::vec3 eye{0.0f};
   glm::vec3 forward{0.0f, 0.0f, -1.0f};  // unit image-plane normal
+  std::uint32_t debug_view = 0;           // gpu_layout::kDebugView* (the viewer's views); 0: final
 };
 
 class SoftGiFrame {

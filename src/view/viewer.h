@@ -1,0 +1,101 @@
+#pragma once
+// Viewer: the state of one run of the viewer application (viewer_app.h is its entry point).
+// Split over viewer.cpp (set-up, the loop, events, loading), viewer_frame.cpp (one frame:
+// world state, adaptive resolution, render, UI, screenshot, present) and viewer_files.cpp
+// (scene saving, screenshots, the state file for tests).
+#include <chrono>
+#include <deque>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "gpu/context.h"
+#include "gpu/resources.h"
+#include "gpu/scene_renderer.h"
+#include "view/scene_loader.h"
+#include "view/swapchain.h"
+#include "view/ui_pass.h"
+#include "view/viewer_app.h"
+#include "view/viewer_core.h"
+#include "view/viewer_ui.h"
+#include "view/window.h"
+
+struct ImGuiContext;
+
+namespace proxygi::view {
+
+// Ring slots of the scene renderer: one frame prepared while the previous one renders.
+inline constexpr std::size_t kFramesInFlight = 2;
+
+class Viewer {
+ public:
+  explicit Viewer(const ViewerOptions& options);
+  ~Viewer();
+  Status init();
+  Status run();
+
+ private:
+  // viewer.cpp
+  void dispatch(const Event& event);
+  Status adopt(Result<LoadedScene> loaded);
+  Status make_renderer();
+  // viewer_frame.cpp
+  Status frame();
+  Status render_into(const TargetImage& target);
+  Status finish_oldest();  // waits for the oldest frame in flight
+  Status finish_all();
+  void evaluate_world();
+  void adapt_resolution(double frame_ms);
+  Status finish_ui(const TargetImage& target, VkSemaphore signal, VkImageLayout final_layout);
+  HudInfo hud_info() const;
+  // viewer_files.cpp
+  Status save_scene(const std::string& path);
+  Status write_screenshot(const std::vector<std::uint8_t>& rgba, std::uint32_t width, std::uint32_t height,
+                          const std::string& path);
+  Status write_state() const;
+
+  ViewerOptions options_;
+  std::unique_ptr<Window> window_;
+  std::unique_ptr<gpu::Context> context_;
+  std::unique_ptr<Swapchain> swapchain_;
+  bool swapchain_stale_ = false;
+  std::optional<gpu::Image> offscreen_;
+  ImGuiContext* imgui_ = nullptr;
+  std::unique_ptr<UiPass> ui_pass_;
+  SceneLoader loader_;
+
+  std::string name_;  // what is shown
+  std::shared_ptr<const world::World> world_;
+  std::unique_ptr<gpu::SceneRenderer> renderer_;
+  std::deque<gpu::FrameTicket> in_flight_;  // begun, not yet finished (oldest first)
+  scene::Scene scene_;  // editable copy of the world's scene (clips, environment)
+  std::optional<ViewerCore> core_;
+  world::WorldState state_;
+  settings::RenderSettings applied_settings_;
+  std::uint32_t internal_width_ = 0, internal_height_ = 0;
+  std::uint32_t display_width_ = 0, display_height_ = 0;
+
+  std::optional<ScriptPlayer> script_;
+  double script_clock_s_ = 0.0;
+  bool script_started_ = false;
+  double step_s_ = 1.0 / 24.0;
+  std::deque<ScreenshotEvent> screenshots_;  // one per frame, oldest first
+  int screenshot_count_ = 0;
+  bool quit_ = false;
+  bool adaptive_ = true;
+  double scale_ = 1.0;
+  int adaptive_frames_ = 0;
+  double adaptive_ms_ = 0.0;
+  int frames_ = 0;           // frames the renderer drew
+  bool rendered_last_ = false;
+  bool first_frame_logged_ = false;
+  std::chrono::steady_clock::time_point last_frame_;
+  std::chrono::steady_clock::time_point last_pass_timing_;
+  bool want_pass_timing_ = true;
+  std::vector<PassTime> passes_;
+  FrameTimes times_;
+  std::string save_path_ = "viewer_scene.json";
+  std::string open_path_;
+};
+
+}  // namespace proxygi::view

@@ -1,0 +1,52 @@
+#pragma once
+// The viewer application: a window (GLFW + Vulkan swapchain) or an offscreen image, the viewer
+// core (viewer_core.h), the scene renderer, Dear ImGui over the frame, and files opened in the
+// background. One loop serves people, scripts and tests:
+//
+//   per frame: events (window, script) → core → settings applied in place (apply_settings) →
+//   world evaluated at the core's time with its camera → frame rendered into the target image
+//   (at a lower internal resolution when adaptive) → UI pass → screenshot → present.
+//
+// Loading never blocks the loop: open_scene and world::World::load (import, rig fit or cache)
+// run on a thread; the previous scene keeps playing, and a failure is shown in the window
+// (the previous scene stays). Scripts freeze their clock while a load runs, so they are
+// deterministic.
+#include <chrono>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "base/result.h"
+#include "view/script.h"
+
+namespace proxygi::view {
+
+// Writes RGBA8 sRGB bytes (row 0 on top) as a PNG; the application passes the recorder's writer.
+using PngWriter = std::function<Status(const std::filesystem::path&, std::span<const std::uint8_t>, int, int)>;
+
+struct ViewerOptions {
+  std::string open;                  // what to open first (scene_open.h); empty: default
+  std::filesystem::path assets_dir;  // the bundled assets
+  std::string device;                // --device
+  bool offscreen = false;            // render into an image, no window
+  int width = 1280, height = 720;    // window / offscreen size
+  bool vsync = true;                 // FIFO; false: mailbox or immediate
+  bool validation = false;           // validation layer on; any message fails the run
+  bool adaptive_resolution = true;   // lower internal resolution below min_fps
+  double min_fps = 15.0;
+  bool show_ui = true;
+  bool play = false;                 // start playing
+  std::optional<Script> script;      // drive the viewer from a script (fixed time step)
+  int max_frames = 0;                // stop after this many rendered frames (0: no limit)
+  std::filesystem::path state_out;   // write the final viewer state here as JSON (tests)
+  std::filesystem::path screenshot_dir = "screenshots";  // F12
+  PngWriter write_png;
+  std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
+};
+
+// Runs until quit (window closed, Esc, script end, max_frames). Errors: no device, no window
+// (without --offscreen), a failing first scene, validation messages with validation on.
+Status run_viewer(const ViewerOptions& options);
+
+}  // namespace proxygi::view

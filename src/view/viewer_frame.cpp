@@ -1,0 +1,263 @@
+// One frame of the viewer: events, clock, world state, settings in place, adaptive internal
+// resolution, the frame into the target image, the UI over it, screenshot, present.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <thread>
+
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_vulkan.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include "base/log.h"
+#include "view/viewer.h"
+
+namespace proxygi::view {
+namespace {
+
+constexpr double kScales[] = {1.0, 0.75, 0.5, 0.375, 0.25};  // internal / display resolution
+constexpr int kAdaptWindow = 16;                              // frames measured per decision
+constexpr double kPassTimingPeriodS = 5.0;
+
+const char* present_name(VkPresentModeKHR mode) {
+  switch (mode) {
+    case VK_PRESENT_MODE_FIFO_KHR: return "FIFO (vsync)";
+    case VK_PRESENT_MODE_MAILBOX_KHR: return "mailbox";
+    case VK_PRESENT_MODE_IMMEDIATE_KHR: return "immediate";
+    default: return "other";
+  }
+}
+
+}  // namespace
+
+// Poses the world at the core's time; the scene camera goes to the core (for the free camera's
+// start), and the free camera replaces it when on. The renderer draws this state as it is.
+void Viewer::evaluate_world() {
+  if (Status s = world_->evaluate(core_->state().playback.time_s, std::nullopt, state_); !s) {
+    core_->state().message = s.message();
+    return;
+  }
+  core_->set_scene_camera(state_.camera);
+  if (auto free = core_->camera_override()) state_.camera = *free;
+  glm::vec3 low(1e30f), high(-1e30f);
+  for (const render::Sphere& sphere : state_.spheres)
+    low = glm::min(low, sphere.center - sphere.radius), high = glm::max(high, sphere.center + sphere.radius);
+  for (const auto& instance : state_.instances)
+    for (const glm::mat4& node : instance.pose.world) low = glm::min(low, glm::vec3(node[3])), high = glm::max(high, glm::vec3(node[3]));
+  if (low.x <= high.x) core_->set_bounds(0.5f * (low + high), std::max(0.5f * glm::length(high - low), 0.05f));
+}
+
+void Viewer::adapt_resolution(double frame_ms) {
+  if (!adaptive_) {
+    scale_ = 1.0;
+    return;
+  }
+  adaptive_ms_ += frame_ms;
+  if (++adaptive_frames_ < kAdaptWindow) return;
+  const double mean = adaptive_ms_ / adaptive_frames_, budget = 1000.0 / options_.min_fps;
+  adaptive_frames_ = 0, adaptive_ms_ = 0.0;
+  const auto* current = std::find(std::begin(kScales), std::end(kScales), scale_);
+  if (mean > budget && current + 1 != std::end(kScales)) scale_ = *(current + 1);
+  // Up only with room to spare: the next scale up costs about (s'/s)² more.
+  else if (mean < 0.45 * budget && current != std::begin(kScales)) scale_ = *(current - 1);
+}
+
+Status Viewer::render_into(const TargetImage& target) {
+  if (!renderer_) return clear_target(*context_, target);
+  const std::uint32_t width = std::max(16u, std::uint32_t(std::lround(target.width * scale_)));
+  const std::uint32_t height = std::max(16u, std::uint32_t(std::lround(target.height * scale_)));
+  if (core_->state().settings != applied_settings_ || width != internal_width_ || height != internal_height_) {
+    if (Status s = finish_all(); !s) return s;
+    if (Status s = renderer_->apply_settings(core_->state().settings, width, height); !s) {
+      core_->state().message = "settings: " + s.message();
+      core_->state().settings = applied_settings_;
+    } else {
+      applied_settings_ = core_->state().settings;
+      internal_width_ = width, internal_height_ = height;
+    }
+  }
+  evaluate_world();
+  gpu::FrameRequest request;
+  request.state = &state_;
+  request.frame = core_->state().playback.frame();
+  request.debug_view = std::uint32_t(core_->state().view);
+  request.output = gpu::FrameOutput::into({target.image, target.format, target.width, target.height,
+                                           VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
+  // Frames in flight: the next frame is prepared on the CPU while the device still renders the
+  // previous one; only when every ring slot is busy does the loop wait for the oldest.
+  while (in_flight_.size() >= kFramesInFlight)
+    if (Status s = finish_oldest(); !s) return s;
+  auto ticket = renderer_->begin(request);
+  if (!ticket) return ticket.error();
+  in_flight_.push_back(*ticket);
+  if (!first_frame_logged_) {
+    if (Status s = finish_all(); !s) return s;  // measured to the frame's completion
+    first_frame_logged_ = true;
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - options_.started).count();
+    std::fprintf(stderr, "view: first frame of %s after %.2f s\n", name_.c_str(), seconds);
+  }
+  rendered_last_ = true;
+  if (options_.show_ui && core_->state().toggles.ui && core_->state().toggles.hud && !script_ &&
+      (want_pass_timing_ || std::chrono::steady_clock::now() - last_pass_timing_ > std::chrono::duration<double>(kPassTimingPeriodS))) {
+    want_pass_timing_ = false;
+    last_pass_timing_ = std::chrono::steady_clock::now();
+    if (Status s = finish_all(); !s) return s;  // pass timing needs an idle ring
+    if (auto timings = renderer_->time_passes(core_->state().playback.frame())) {
+      passes_.clear();
+      passes_.push_back({"prepare (CPU)", timings->cpu_prepare_ms});
+      for (std::size_t p = 0; p < std::size_t(gpu::FramePass::count); ++p)
+        if (timings->milliseconds[p] > 0.0) passes_.push_back({gpu::frame_pass_name(gpu::FramePass(p)), timings->milliseconds[p]});
+    }
+  }
+  return {};
+}
+
+Status Viewer::finish_oldest() {
+  const gpu::FrameTicket ticket = in_flight_.front();
+  in_flight_.pop_front();
+  auto finished = renderer_->finish(ticket);
+  if (!finished) return finished.error();
+  return {};
+}
+
+Status Viewer::finish_all() {
+  while (!in_flight_.empty())
+    if (Status s = finish_oldest(); !s) return s;
+  return {};
+}
+
+HudInfo Viewer::hud_info() const {
+  HudInfo hud;
+  hud.device = context_->report().name;
+  hud.driver = context_->report().driver;
+  hud.display_width = display_width_, hud.display_height = display_height_;
+  hud.internal_width = internal_width_, hud.internal_height = internal_height_;
+  hud.present = swapchain_ ? present_name(swapchain_->present_mode()) : "offscreen";
+  hud.swapchain_recreations = swapchain_ ? swapchain_->recreations() : 0;
+  hud.passes = passes_;
+  hud.loading = loader_.progress();
+  if (renderer_) {
+    hud.proxies = world_->proxy_count();
+    hud.receivers = renderer_->config().receiver_count();
+    for (const auto& model : world_->models())
+      for (const auto& mesh : model->character.meshes)
+        for (const auto& primitive : mesh.primitives) hud.triangles += primitive.indices.size() / 3;
+  }
+  hud.title = name_;
+  return hud;
+}
+
+// The UI over the frame in `target`, the screenshot when one is due, then (window) present.
+Status Viewer::finish_ui(const TargetImage& target, VkSemaphore signal, VkImageLayout final_layout) {
+  const bool with_ui = options_.show_ui && core_ && core_->state().toggles.ui &&
+                       !(!screenshots_.empty() && !screenshots_.front().with_ui);
+  ImGuiIO& io = ImGui::GetIO();
+  if (window_) {
+    ImGui_ImplGlfw_NewFrame();
+  } else {
+    io.DisplaySize = {float(target.width), float(target.height)};
+    io.DeltaTime = float(step_s_);
+  }
+  ImGui_ImplVulkan_NewFrame();
+  ImGui::NewFrame();
+  UiRequests requests;
+  if (with_ui) {
+    const HudInfo hud = hud_info();
+    UiContext ui{*core_, hud, times_, world_.get(), renderer_ ? &state_ : nullptr, &scene_, &adaptive_, &save_path_, &open_path_};
+    requests = draw_ui(ui);
+  }
+  ImGui::Render();
+  if (Status s = ui_pass_->submit(target, with_ui ? ImGui::GetDrawData() : nullptr, signal); !s) return s;
+  if (!screenshots_.empty()) {
+    if (Status s = ui_pass_->wait(); !s) return s;
+    auto rgba = read_target(*context_, target, final_layout);
+    if (!rgba) return rgba.error();
+    if (Status s = write_screenshot(*rgba, target.width, target.height, screenshots_.front().path); !s)
+      core_->state().message = s.message();
+    screenshots_.pop_front();
+  }
+  if (requests.screenshot) screenshots_.push_back(ScreenshotEvent{"", true});
+  if (requests.time_passes) want_pass_timing_ = true;
+  if (requests.open) loader_.open(*requests.open, world_ ? &world_->scene() : nullptr);
+  if (requests.save)
+    if (Status s = save_scene(*requests.save); !s) core_->state().message = s.message();
+  if (requests.reload) loader_.load(scene_, name_);
+  return {};
+}
+
+Status Viewer::frame() {
+  const auto now = std::chrono::steady_clock::now();
+  const double wall_dt = std::min(std::chrono::duration<double>(now - last_frame_).count(), 0.25);
+  const double frame_ms = std::chrono::duration<double, std::milli>(now - last_frame_).count();
+  last_frame_ = now;
+  // Only frames the renderer drew count (not the placeholder frames while the first scene loads).
+  if (rendered_last_) times_.add(frame_ms), adapt_resolution(frame_ms);
+  rendered_last_ = false;
+
+  std::vector<Event> events = window_ ? window_->poll() : std::vector<Event>{};
+  if (auto loaded = loader_.poll())
+    if (Status s = adopt(std::move(*loaded)); !s) return s;
+  if (core_)
+    step_s_ = script_ && script_->script().step_s ? *script_->script().step_s : 1.0 / core_->state().playback.fps;
+  if (script_) {
+    // The script's clock stands still while a scene loads. Frame k shows script time k·step,
+    // after the events due by then: the clock advances first, then its events apply.
+    if (loader_.busy()) {
+      for (const Event& event : events) dispatch(event);
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      return {};
+    }
+    if (!screenshots_.empty() || script_->has_due(script_clock_s_)) {
+      // A screenshot takes its frame, and the events after it at the same time apply next.
+    } else if (script_started_) {
+      core_->advance(step_s_);
+      script_clock_s_ += step_s_;
+    }
+    script_started_ = true;
+    if (screenshots_.empty())
+      for (Event& event : script_->due(script_clock_s_)) events.push_back(std::move(event));
+  } else if (core_) {
+    core_->advance(wall_dt);
+  }
+  for (const Event& event : events) dispatch(event);
+  if (core_)
+    for (const Event& event : core_->take_requests()) dispatch(event);
+
+  if (!window_) {
+    TargetImage target{offscreen_->handle(), offscreen_->view(), offscreen_->format(), offscreen_->width(),
+                       offscreen_->height()};
+    if (Status s = render_into(target); !s) return s;
+    return finish_ui(target, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+  }
+
+  int width = 0, height = 0;
+  window_->framebuffer_size(width, height);
+  if (width == 0 || height == 0) {  // minimized: no swapchain images to draw into
+    glfwWaitEventsTimeout(0.02);
+    return {};
+  }
+  if (swapchain_stale_ || std::uint32_t(width) != swapchain_->width() || std::uint32_t(height) != swapchain_->height()) {
+    ui_pass_->forget_framebuffers();
+    if (Status s = swapchain_->recreate(std::uint32_t(width), std::uint32_t(height)); !s) return s;
+    swapchain_stale_ = false;
+  }
+  display_width_ = swapchain_->width(), display_height_ = swapchain_->height();
+  auto acquired = swapchain_->acquire();
+  if (!acquired) return acquired.error();
+  if (!*acquired) {  // out of date: rebuild next frame
+    swapchain_stale_ = true;
+    return {};
+  }
+  const std::uint32_t index = (*acquired)->index;
+  const TargetImage& target = swapchain_->image(index);
+  if (Status s = render_into(target); !s) return s;
+  if (Status s = finish_ui(target, swapchain_->render_done(index), VK_IMAGE_LAYOUT_PRESENT_SRC_KHR); !s) return s;
+  auto presented = swapchain_->present(index, swapchain_->render_done(index));
+  if (!presented) return presented.error();
+  if (!*presented || (*acquired)->stale) swapchain_stale_ = true;
+  return {};
+}
+
+}  // namespace proxygi::view

@@ -1,0 +1,55 @@
+#pragma once
+// The viewer's GLFW window (X11 on Debian's GLFW 3.3): no client API (Vulkan draws into it),
+// callbacks turned into viewer events (input.h), and files dropped on it turned into
+// OpenFileEvents. Dear ImGui's GLFW backend is installed after these callbacks and chains to
+// them; events go to the viewer only when ImGui does not want them (a text field for keys,
+// a UI window under the cursor for the mouse).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "base/result.h"
+#include "view/input.h"
+
+struct GLFWwindow;
+
+namespace proxygi::view {
+
+class Window {
+ public:
+  // Fails (with GLFW's message) when there is no display.
+  static Result<std::unique_ptr<Window>> create(int width, int height, const std::string& title);
+  ~Window();
+  Window(const Window&) = delete;
+  Window& operator=(const Window&) = delete;
+
+  static std::vector<std::string> required_instance_extensions();
+  Result<VkSurfaceKHR> create_surface(VkInstance instance) const;
+  void init_imgui();  // ImGui's GLFW backend (the ImGui context must exist)
+
+  // Polls GLFW and returns the events since the last call.
+  std::vector<Event> poll();
+  bool should_close() const;
+  void framebuffer_size(int& width, int& height) const;
+  void set_title(const std::string& title);
+  void resize(int width, int height);  // ResizeEvent: 0 × 0 minimizes, negative restores
+  GLFWwindow* handle() const { return window_; }
+
+ private:
+  Window() = default;
+  static void on_key(GLFWwindow* window, int key, int scancode, int action, int mods);
+  static void on_mouse_button(GLFWwindow* window, int button, int action, int mods);
+  static void on_cursor(GLFWwindow* window, double x, double y);
+  static void on_scroll(GLFWwindow* window, double dx, double dy);
+  static void on_drop(GLFWwindow* window, int count, const char** paths);
+
+  GLFWwindow* window_ = nullptr;
+  bool imgui_ = false;
+  std::vector<Event> events_;
+  int dragging_ = -1;  // GLFW button held since a press the viewer took, -1: none
+  double last_x_ = 0.0, last_y_ = 0.0;
+};
+
+}  // namespace proxygi::view

@@ -1,0 +1,134 @@
+// The viewer driven by scripts on the offscreen presenter (label gpu, validation on, zero
+// messages): a frame with the UI hidden is record's frame; Space, arrows and a drag change time
+// and camera as expected; a live change of SH order and k gives record's frame for those
+// settings; a malformed model leaves the previous scene running and shows its error.
+#include <fstream>
+
+#include "gpu/gpu_test_context.h"
+#include "scene/scene_defaults.h"
+#include "scene/scene_parse.h"
+#include "viewer_test_util.h"
+
+namespace proxygi::view {
+namespace {
+
+using ViewerOffscreenTest = gpu::testing::GpuTest;
+using namespace view::testing;
+
+constexpr int kSize = 96;
+
+TEST_F(ViewerOffscreenTest, FrameWithTheUiHiddenIsRecordsFrame) {
+  // Frame 12 of the default scene: Up (+10) and Right twice (+1 each).
+  const auto run = run_viewer_script(R"({"events": [
+      {"t": 0, "key": "up"}, {"t": 0, "key": "right"}, {"t": 0, "key": "right"},
+      {"t": 0.05, "screenshot": "hidden.png", "ui": false},
+      {"t": 0.05, "screenshot": "with_ui.png", "ui": true}]})",
+                                     "default", kSize, kSize, true, "record_equal");
+  ASSERT_TRUE(run.status.ok()) << run.status.message();
+  EXPECT_EQ(run.state["frame"], 12);
+  ASSERT_TRUE(run.shots.count("hidden.png"));
+  const auto expected = record_frame(context(), scene::default_scene(), kSize, kSize, 12);
+  expect_within_one_code(run.shots.at("hidden.png"), expected, "record_equal", "hidden");
+  EXPECT_GT(max_code_difference(run.shots.at("with_ui.png").rgba, expected), 1);  // the UI shows
+}
+
+TEST_F(ViewerOffscreenTest, SpaceArrowsAndADragChangeTimeAndCamera) {
+  const auto run = run_viewer_script(R"({"step_s": 0.05, "events": [
+      {"t": 0, "screenshot": "start.png", "ui": false},
+      {"t": 0, "key": "space"},
+      {"t": 0.5, "key": "space"},
+      {"t": 0.5, "screenshot": "played.png", "ui": false},
+      {"t": 0.55, "key": "right"}, {"t": 0.55, "key": "up"},
+      {"t": 0.6, "drag": {"button": "left", "dx": 120, "dy": 0}},
+      {"t": 0.65, "screenshot": "dragged.png", "ui": false}]})",
+                                     "default", kSize, kSize, true, "script_input");
+  ASSERT_TRUE(run.status.ok()) << run.status.message();
+  // Played 0.5 s (10 steps of 0.05 s: frame 12 of 24 fps), then +1 and +10 frames: frame 23.
+  EXPECT_EQ(run.state["frame"], 23);
+  EXPECT_FALSE(run.state["playing"]);
+  EXPECT_TRUE(run.state["free_camera"]);
+  const auto& eye = run.state["camera"]["eye"];
+  const scene::FixedCamera scene_camera = std::get<scene::FixedCamera>(scene::default_scene().camera.kind);
+  EXPECT_GT(std::abs(eye[0].get<float>() - scene_camera.position.x), 1.0f);  // orbited 36 degrees
+  ASSERT_EQ(run.shots.size(), 3u);
+  EXPECT_GT(max_code_difference(run.shots.at("start.png").rgba, run.shots.at("played.png").rgba), 8);
+  EXPECT_GT(max_code_difference(run.shots.at("played.png").rgba, run.shots.at("dragged.png").rgba), 8);
+}
+
+TEST_F(ViewerOffscreenTest, LiveShOrderAndReceiverScaleGiveRecordsFrame) {
+  const auto run = run_viewer_script(R"({"events": [
+      {"t": 0, "key": "up"},
+      {"t": 0.05, "set": {"sh_order": 5, "receiver_scale": 2}},
+      {"t": 0.1, "screenshot": "changed.png", "ui": false},
+      {"t": 0.1, "set": {"sh_order": 3, "receiver_scale": 8, "tonemap": "reinhard"}},
+      {"t": 0.15, "screenshot": "changed_again.png", "ui": false}]})",
+                                     "default", kSize, kSize, true, "live_settings");
+  ASSERT_TRUE(run.status.ok()) << run.status.message();
+  EXPECT_EQ(run.state["settings"]["sh_order"], 3);
+  scene::Scene scene = scene::default_scene();
+  scene.render.sh_order = 5;
+  scene.render.receiver_scale = 2;
+  expect_within_one_code(run.shots.at("changed.png"), record_frame(context(), scene, kSize, kSize, 10), "live_settings",
+                         "changed");
+  scene.render.sh_order = 3;
+  scene.render.receiver_scale = 8;
+  scene.render.tonemap = settings::Tonemap::reinhard;
+  expect_within_one_code(run.shots.at("changed_again.png"), record_frame(context(), scene, kSize, kSize, 10),
+                         "live_settings", "changed_again");
+}
+
+TEST_F(ViewerOffscreenTest, AMalformedModelKeepsThePreviousSceneAndShowsTheError) {
+  const auto bad = output_dir("malformed") / "broken.glb";
+  std::ofstream(bad) << "glTF this is not a binary glTF";
+  const std::string script = R"({"events": [
+      {"t": 0, "open": ")" + bad.string() + R"("},
+      {"t": 0.05, "key": "up"},
+      {"t": 0.1, "screenshot": "after.png", "ui": false}]})";
+  const auto run = run_viewer_script(script, "default", kSize, kSize, true, "malformed");
+  ASSERT_TRUE(run.status.ok()) << run.status.message();
+  EXPECT_EQ(run.state["scene"], "default");
+  EXPECT_NE(run.state["message"].get<std::string>().find("broken.glb"), std::string::npos) << run.state["message"];
+  expect_within_one_code(run.shots.at("after.png"), record_frame(context(), scene::default_scene(), kSize, kSize, 10),
+                         "malformed", "after");
+}
+
+TEST_F(ViewerOffscreenTest, SavedSceneRecordsTheFrameOnScreen) {
+  const auto saved = output_dir("save") / "seen.json";
+  const std::string script = R"({"events": [
+      {"t": 0, "key": "up"}, {"t": 0, "drag": {"button": "left", "dx": 60, "dy": 20}},
+      {"t": 0, "set": {"sh_order": 5}},
+      {"t": 0.05, "screenshot": "seen.png", "ui": false},
+      {"t": 0.05, "save": ")" + saved.string() + R"("}]})";
+  const auto run = run_viewer_script(script, "default", kSize, kSize, true, "save");
+  ASSERT_TRUE(run.status.ok()) << run.status.message();
+  auto scene = scene::load_scene(saved);
+  ASSERT_TRUE(scene.ok()) << scene.message();
+  EXPECT_EQ(scene->output.first_frame, 10);
+  EXPECT_EQ(scene->render.sh_order, 5);
+  // `record` of the saved scene renders its first frame as the viewer showed it.
+  expect_within_one_code(run.shots.at("seen.png"), record_frame(context(), *scene, kSize, kSize, 10), "save", "seen");
+}
+
+TEST_F(ViewerOffscreenTest, ViewsShowTheFramesInputsAndCycleBackToTheFinalFrame) {
+  const auto run = run_viewer_script(R"({"events": [
+      {"t": 0, "key": "up"}, {"t": 0, "screenshot": "final.png", "ui": false},
+      {"t": 0, "key": "v"}, {"t": 0, "screenshot": "albedo.png", "ui": false},
+      {"t": 0, "key": "v"}, {"t": 0, "screenshot": "normals.png", "ui": false},
+      {"t": 0, "key": "v"}, {"t": 0, "screenshot": "irradiance.png", "ui": false},
+      {"t": 0, "key": "v"}, {"t": 0, "screenshot": "receivers.png", "ui": false},
+      {"t": 0, "key": "v"}, {"t": 0, "screenshot": "again.png", "ui": false}]})",
+                                     "default", kSize, kSize, true, "views");
+  ASSERT_TRUE(run.status.ok()) << run.status.message();
+  ASSERT_EQ(run.shots.size(), 6u);
+  const auto& final_frame = run.shots.at("final.png").rgba;
+  for (const char* view : {"albedo.png", "normals.png", "irradiance.png", "receivers.png"})
+    EXPECT_GT(max_code_difference(run.shots.at(view).rgba, final_frame), 16) << view;
+  // Receivers at 1/4 (no upsampling) differ from the upsampled irradiance.
+  EXPECT_GT(max_code_difference(run.shots.at("receivers.png").rgba, run.shots.at("irradiance.png").rgba), 4);
+  expect_within_one_code(run.shots.at("again.png"), record_frame(context(), scene::default_scene(), kSize, kSize, 10),
+                         "views", "again");
+  EXPECT_EQ(run.state["view"], "final");
+}
+
+}  // namespace
+}  // namespace proxygi::view
