@@ -59,9 +59,8 @@ Result<RunResults> run_regression(gpu::Context& context, const std::vector<Scena
   for (const Scenario& scenario : scenarios)
     for (const Check& check : scenario.checks)
       if (wanted(options, scenario.name, check.name)) all.push_back({&scenario, &check});
-  const std::size_t count = std::size_t(options.shard.count), index = std::size_t(options.shard.index);
-  const std::vector<Job> jobs(all.begin() + std::ptrdiff_t(all.size() * index / count),
-                              all.begin() + std::ptrdiff_t(all.size() * (index + 1) / count));
+  const run::IndexRange slice = run::shard_slice(all.size(), options.shard);
+  const std::vector<Job> jobs(all.begin() + std::ptrdiff_t(slice.begin), all.begin() + std::ptrdiff_t(slice.end));
   std::unique_ptr<ScenarioRun> run;
   const Scenario* loaded = nullptr;
   for (const Job& job : jobs) {

@@ -1,5 +1,6 @@
 #include "run/frame_plan.h"
 
+#include <algorithm>
 #include <charconv>
 
 namespace proxygi::run {
@@ -56,6 +57,11 @@ Result<std::vector<int>> plan_frames(const scene::Output& output, const std::opt
   std::vector<int> frames;
   for (long long f = range.first + shard.index; f <= range.last; f += shard.count) frames.push_back(int(f));
   return frames;
+}
+
+IndexRange shard_slice(std::size_t count, const Shard& shard) {
+  const std::size_t n = std::size_t(std::max(1, shard.count)), i = std::size_t(std::clamp(shard.index, 0, shard.count - 1));
+  return {count * i / n, count * (i + 1) / n};
 }
 
 }  // namespace proxygi::run

@@ -1,11 +1,13 @@
 #pragma once
 // Which frames one `proxygi record` process renders: the scene's output range, optionally
-// narrowed by --frames A:B (inclusive) and split by --shard I/N.
+// narrowed by --frames A:B (inclusive) and split by --shard I/N; and which contiguous run of a
+// work list (regress checks, bench chart units) one shard takes.
 //
 // Shard rule: shard I of N takes every frame f of the range with (f - A) mod N == I, where A is
 // the first frame of the range. Shards are disjoint, cover the range, and are balanced to within
 // one frame, so N independent processes (Slurm arrays, GNU parallel) writing into one folder
 // produce exactly the files of a single run.
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -40,5 +42,14 @@ FrameRange scene_frame_range(const scene::Output& output);
 // (an error names both ranges otherwise). May be empty when the shard count exceeds the range.
 Result<std::vector<int>> plan_frames(const scene::Output& output, const std::optional<FrameRange>& requested,
                                      const Shard& shard);
+
+// Shard I of N of a list of `count` work items, for work where neighbours share set-up (regress:
+// a scenario's world; bench chart: a scene's references): the I-th of N contiguous runs,
+// [count·I/N, count·(I+1)/N). Disjoint, covering, balanced to within one item; may be empty.
+struct IndexRange {
+  std::size_t begin = 0, end = 0;  // [begin, end)
+  bool contains(std::size_t i) const { return i >= begin && i < end; }
+};
+IndexRange shard_slice(std::size_t count, const Shard& shard);
 
 }  // namespace proxygi::run

@@ -83,3 +83,30 @@ TEST(RecordPlan, MoreShardsThanFramesLeavesSomeEmpty) {
 
 }  // namespace
 }  // namespace proxygi::app
+
+namespace proxygi::run {
+namespace {
+
+// The contiguous shard slices (regress checks, bench chart units) tile the list in order.
+TEST(ShardSlice, ContiguousRunsCoverTheListInOrderBalanced) {
+  for (std::size_t items : {0u, 1u, 4u, 7u, 25u})
+    for (int count : {1, 2, 3, 8}) {
+      std::size_t next = 0, smallest = items, largest = 0;
+      for (int index = 0; index < count; ++index) {
+        const IndexRange slice = shard_slice(items, {index, count});
+        EXPECT_EQ(slice.begin, next) << index << "/" << count << " of " << items;
+        EXPECT_LE(slice.begin, slice.end);
+        next = slice.end;
+        smallest = std::min(smallest, slice.end - slice.begin);
+        largest = std::max(largest, slice.end - slice.begin);
+      }
+      EXPECT_EQ(next, items) << count << " shards of " << items;
+      EXPECT_LE(largest - smallest, 1u) << count << " shards of " << items;
+    }
+  EXPECT_EQ(shard_slice(4, {1, 2}).begin, 2u);
+  EXPECT_TRUE(shard_slice(4, {1, 2}).contains(3));
+  EXPECT_FALSE(shard_slice(4, {1, 2}).contains(1));
+}
+
+}  // namespace
+}  // namespace proxygi::run
