@@ -38,6 +38,16 @@ int run_merge(const RegressArgs& args) {
     auto parsed = regress::results_from_json(std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()),
                                              dir + "/results.json");
     if (!parsed) return fail_bad_input(parsed.message());
+    // timings.json (budget times) is optional: shard folders from before it existed still merge.
+    const auto timings_path = std::filesystem::path(dir) / "timings.json";
+    if (std::error_code e; std::filesystem::exists(timings_path, e)) {
+      auto timings = read_file(timings_path, 1u << 28);
+      if (!timings) return fail_bad_input(timings.message());
+      if (Status s = regress::attach_timings(std::string_view(reinterpret_cast<const char*>(timings->data()), timings->size()),
+                                             timings_path.string(), *parsed);
+          !s)
+        return fail_bad_input(s.message());
+    }
     shards.push_back(std::move(*parsed));
   }
   auto merged = regress::merge_results(shards);
@@ -51,6 +61,11 @@ void print_result(const regress::CheckResult& c, double seconds) {
   std::printf("%-8s %s/%s (%s, %.1f s): %s\n", std::string(regress::outcome_name(c.outcome)).c_str(), c.scenario.c_str(),
               c.check.c_str(), c.type.c_str(), seconds, c.message.c_str());
   for (std::size_t i = 0; i < c.details.size() && i < 5; ++i) std::printf("           %s\n", c.details[i].c_str());
+  if (!c.timings_ms.empty()) {
+    std::printf("           measured: median %.1f ms per frame (runs:", regress::median_ms(c.timings_ms));
+    for (double ms : c.timings_ms) std::printf(" %.1f", ms);
+    std::printf(")\n");
+  }
   if (regress::is_failure(c.outcome)) std::printf("           bless: %s\n", c.bless_command().c_str());
   std::fflush(stdout);
 }

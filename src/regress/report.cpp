@@ -150,7 +150,8 @@ Status write_reports(const RunResults& results, const std::filesystem::path& dir
   if (error) return make_error(dir.string() + ": " + error.message());
   if (Status s = write_file_atomically(dir / "report.html", std::string_view(report_html(results))); !s) return s;
   if (Status s = write_file_atomically(dir / "results.json", std::string_view(to_json(results))); !s) return s;
-  return write_file_atomically(dir / "junit.xml", std::string_view(junit_xml(results)));
+  if (Status s = write_file_atomically(dir / "junit.xml", std::string_view(junit_xml(results))); !s) return s;
+  return write_file_atomically(dir / "timings.json", std::string_view(timings_to_json(results)));
 }
 
 }  // namespace proxygi::regress

@@ -115,6 +115,41 @@ Result<RunResults> results_from_json(std::string_view text, const std::string& w
   }
 }
 
+double median_ms(const std::vector<double>& runs_ms) {
+  if (runs_ms.empty()) return 0.0;
+  std::vector<double> sorted = runs_ms;
+  std::sort(sorted.begin(), sorted.end());
+  return sorted[sorted.size() / 2];
+}
+
+std::string timings_to_json(const RunResults& results) {
+  std::vector<CheckResult> checks = results.checks;
+  sort_checks(checks);
+  ojson j;
+  j["device"] = results.device;
+  j["checks"] = ojson::array();
+  for (const CheckResult& c : checks)
+    if (!c.timings_ms.empty())
+      j["checks"].push_back({{"scenario", c.scenario}, {"check", c.check}, {"runs_ms", c.timings_ms}, {"median_ms", median_ms(c.timings_ms)}});
+  return j.dump(1) + "\n";
+}
+
+Status attach_timings(std::string_view text, const std::string& where, RunResults& results) {
+  try {
+    const ojson j = ojson::parse(text.begin(), text.end());
+    for (const ojson& k : j.at("checks")) {
+      const std::string scenario = k.at("scenario").get<std::string>(), check = k.at("check").get<std::string>();
+      auto found = std::find_if(results.checks.begin(), results.checks.end(),
+                                [&](const CheckResult& c) { return c.scenario == scenario && c.check == check; });
+      if (found == results.checks.end()) return make_error(where + ": " + scenario + "/" + check + ": not in results.json");
+      found->timings_ms = k.at("runs_ms").get<std::vector<double>>();
+    }
+    return {};
+  } catch (const ojson::exception& e) {
+    return make_error(where + ": not a timings.json: " + e.what());
+  }
+}
+
 Result<RunResults> merge_results(const std::vector<RunResults>& shards) {
   RunResults merged;
   for (const RunResults& shard : shards) {

@@ -1,6 +1,7 @@
 #pragma once
 // What a regression run found: one CheckResult per (scenario, check), in a deterministic order,
 // serialized to results.json (no timings, no absolute paths: shards merge byte-identically).
+// Measured times (budget checks) travel beside it in timings.json, which only they may change.
 #include <optional>
 #include <string>
 #include <string_view>
@@ -40,6 +41,9 @@ struct CheckResult {
   int first_failing_frame = -1;
   std::string tier;                  // the golden tier compared against ("" for golden-free checks)
   std::optional<CheckImages> images;
+  // Budget checks: ms per frame of each timed run. Only in timings.json, never in results.json,
+  // junit.xml or report.html (those stay byte-identical between runs; the outcome carries pass/fail).
+  std::vector<double> timings_ms;
   std::string bless_command() const;  // "proxygi regress FILE --bless scenario/check"
 };
 
@@ -52,6 +56,12 @@ struct RunResults {
 
 std::string to_json(const RunResults& results);
 Result<RunResults> results_from_json(std::string_view text, const std::string& where);
+// timings.json: {"device", "checks": [{"scenario", "check", "runs_ms": [...], "median_ms"}]}
+// for the checks with timings, in results.json's order.
+std::string timings_to_json(const RunResults& results);
+// Attaches a timings.json's runs to the matching checks of `results` (unknown checks: an error).
+Status attach_timings(std::string_view text, const std::string& where, RunResults& results);
+double median_ms(const std::vector<double>& runs_ms);  // 0 when empty
 // Shards' results into one (checks sorted by scenario then check; device must agree).
 Result<RunResults> merge_results(const std::vector<RunResults>& shards);
 
