@@ -1,17 +1,21 @@
 // proxygi bench chart [--json] [--out DIR] [--cache DIR] [--size N] [--frames N (3)] [--timing-frames N (8)]
 //   [--reference-spp N] [--scenes a,b] [--shared DIR] [--lighting sh|full] [--quick]
-//   [--references-only]
+//   [--references-only] [--shard I/N]
+// proxygi bench chart --merge SHARD_DIR... [--out DIR] [--json] [--timings-from FILE]
 // The speed–accuracy chart: for the default scene and each shared character, a few frames of
 // motion, every proxy setting, the vertex and AO baselines, and path tracing at 1, 4, 16, 64 spp
 // with and without the guided filter: ms per frame against the error to a converged path-traced
 // reference, measured in one run on this machine. Writes DIR/bench-chart.csv, .md and .png
-// (log–log, Pareto front named), prints the table (or JSON with --json), and reports the goals.
-// References are cached under --cache and reused (or continued) by later runs.
+// (log–log, Pareto front named), -scores.json and -timings.json, prints the table (or JSON with
+// --json), and reports the goals. References are cached under --cache and reused (or continued)
+// by later runs. --shard measures one shard of the chart's units into DIR/bench-chart-shard.json;
+// --merge joins shards into the chart a single run writes (bench_chart_shards.h).
 #include <cstdio>
 
 #include <nlohmann/json.hpp>
 
 #include "apps/bench_chart_report.h"
+#include "apps/bench_chart_shards.h"
 #include "apps/chart_methods.h"
 #include "apps/commands.h"
 #include "base/atomic_file.h"
@@ -33,12 +37,15 @@ struct ChartArgs {
   std::string lighting = "sh";
   bool quick = false;
   bool references_only = false;
+  std::string shard;
+  std::vector<std::string> merge;
+  std::string timings_from;
   std::string device;
 };
 
 // Path-tracing rows of one scene: per (samples, guided) the mean over its frames.
-void add_path_tracing_rows(const std::string& scene, const std::vector<std::vector<study::PathTracingScore>>& frames,
-                           std::vector<study::ChartRow>& rows) {
+void add_path_tracing_rows(const std::string& scene, std::size_t unit,
+                           const std::vector<std::vector<study::PathTracingScore>>& frames, std::vector<UnitRow>& rows) {
   if (frames.empty()) return;
   for (std::size_t i = 0; i < frames.front().size(); ++i) {
     study::ChartRow row;
@@ -50,11 +57,61 @@ void add_path_tracing_rows(const std::string& scene, const std::vector<std::vect
       row.milliseconds += frame[i].milliseconds / count;
       study::add_scores(row, frame[i].scores, 1.0 / count);
     }
-    rows.push_back(row);
+    rows.push_back({unit, row});
   }
 }
 
+// Means over scenes, Pareto fronts, the files and the printed summary: the same for a single
+// run and a merge of shards.
+int finish_chart(const ChartArgs& args, std::vector<study::ChartRow> rows, const ChartReportContext& report) {
+  if (report.scenes.size() > 1) {
+    std::vector<study::ChartRow> means = study::mean_over_scenes(rows);
+    rows.insert(rows.begin(), means.begin(), means.end());
+  }
+  study::mark_pareto_fronts(rows);
+  if (Status written = write_chart_report(args.out, rows, report); !written)
+    return fail_runtime("bench chart: " + written.message());
+  if (args.json)
+    std::printf("%s\n", chart_report_json(rows, report).dump(2).c_str());
+  else
+    std::printf("%s", chart_summary_text(rows, report).c_str());
+  return kExitOk;
+}
+
+int run_merge(const ChartArgs& args) {
+  if (!args.shard.empty()) return fail_bad_input("bench chart: --merge and --shard exclude each other");
+  std::vector<ChartShard> shards;
+  for (const std::string& dir : args.merge) {
+    const std::filesystem::path path = std::filesystem::path(dir) / kChartShardFile;
+    auto bytes = read_file(path, 1u << 28);
+    if (!bytes) return fail_bad_input("bench chart --merge: " + bytes.message());
+    auto shard = shard_from_json(std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()), path.string());
+    if (!shard) return fail_bad_input("bench chart --merge: " + shard.message());
+    shards.push_back(std::move(*shard));
+  }
+  ChartReportContext report;
+  auto rows = merge_shards(shards, report);
+  if (!rows) return fail_bad_input("bench chart " + rows.message());
+  if (!args.timings_from.empty()) {
+    auto bytes = read_file(args.timings_from, 1u << 28);
+    if (!bytes) return fail_bad_input("bench chart --timings-from: " + bytes.message());
+    if (Status s = replace_timings(*rows, std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()),
+                                   args.timings_from);
+        !s)
+      return fail_bad_input("bench chart --timings-from: " + s.message());
+  }
+  return finish_chart(args, std::move(*rows), report);
+}
+
 int run_bench_chart(const ChartArgs& args) {
+  if (!args.merge.empty()) return run_merge(args);
+  if (!args.timings_from.empty()) return fail_bad_input("bench chart: --timings-from needs --merge");
+  run::Shard shard;
+  if (!args.shard.empty()) {
+    auto parsed = run::parse_shard(args.shard);
+    if (!parsed) return fail_bad_input("bench chart: " + parsed.message());
+    shard = *parsed;
+  }
   study::ChartSceneOptions scene_options;
   scene_options.size = args.size;
   scene_options.frame_count = args.frames;
@@ -84,11 +141,22 @@ int run_bench_chart(const ChartArgs& args) {
     if (!created) return fail_runtime(created.message());
     context = std::move(*created);
   }
-  std::vector<study::ChartRow> rows;
+  std::vector<UnitRow> rows;
   const std::vector<MethodSetting> grid = method_grid(args.quick);
-  for (const study::ChartScene& chart : *scenes) {
+  const std::size_t units_per_scene = grid.size() + 1;  // path tracing, then each setting
+  const std::size_t units = scenes->size() * units_per_scene;
+  const run::IndexRange slice = run::shard_slice(units, shard);
+  for (std::size_t s = 0; s < scenes->size(); ++s) {
+    const study::ChartScene& chart = (*scenes)[s];
+    const std::size_t first_unit = s * units_per_scene;
+    const bool path_tracing = slice.contains(first_unit);
+    std::vector<MethodSetting> grid_part;
+    std::vector<std::size_t> setting_units;
+    for (std::size_t k = 0; k < grid.size(); ++k)
+      if (slice.contains(first_unit + 1 + k)) grid_part.push_back(grid[k]), setting_units.push_back(first_unit + 1 + k);
+    if (!path_tracing && grid_part.empty()) continue;  // another shard's scene: not even its references
     std::vector<study::FrameReference> references;
-    std::vector<std::vector<study::PathTracingScore>> path_tracing;
+    std::vector<std::vector<study::PathTracingScore>> path_tracing_scores;
     auto sources = study::load_scene_sources(chart, reference_options);
     if (!sources) return fail_runtime("bench chart: " + chart.name + ": " + sources.message());
     for (int frame : chart.frames) {
@@ -96,34 +164,29 @@ int run_bench_chart(const ChartArgs& args) {
       if (!tracer) return fail_runtime("bench chart: " + chart.name + ": " + tracer.message());
       auto reference = study::load_or_render_reference(chart, frame, **tracer, reference_options);
       if (!reference) return fail_runtime("bench chart: " + chart.name + " reference: " + reference.message());
-      if (!args.references_only) {
+      if (!args.references_only && path_tracing) {
         auto scores = study::score_path_tracing(**tracer, *reference, sample_counts, reference_options);
         if (!scores) return fail_runtime("bench chart: " + chart.name + " path tracing: " + scores.message());
-        path_tracing.push_back(std::move(*scores));
+        path_tracing_scores.push_back(std::move(*scores));
       }
       references.push_back(std::move(*reference));
     }
     if (args.references_only) continue;
-    add_path_tracing_rows(chart.name, path_tracing, rows);
+    add_path_tracing_rows(chart.name, first_unit, path_tracing_scores, rows);
     const Status measured = run_raster_methods(
-        *context, chart, grid, references, {args.timing_frames}, [&](std::size_t i, const study::ChartRow& row) {
+        *context, chart, grid_part, references, {args.timing_frames}, [&](std::size_t i, const study::ChartRow& row) {
           if (!args.json)
             std::fprintf(stderr, "\r  %s: %zu/%zu %-40s %8.2f ms  relMSE %.4g   ", chart.name.c_str(), i + 1,
-                         grid.size(), study::row_label(row).c_str(), row.milliseconds, row.relative_mse);
-          rows.push_back(row);
+                         grid_part.size(), study::row_label(row).c_str(), row.milliseconds, row.relative_mse);
+          rows.push_back({setting_units[i], row});
         });
     if (!measured) return fail_runtime("bench chart: " + chart.name + ", " + measured.message());
-    if (!args.json) std::fprintf(stderr, "\n");
+    if (!args.json && !grid_part.empty()) std::fprintf(stderr, "\n");
   }
   if (args.references_only) {
     std::printf("bench chart: references ready under %s\n", args.cache.c_str());
     return kExitOk;
   }
-  if (scenes->size() > 1) {
-    std::vector<study::ChartRow> means = study::mean_over_scenes(rows);
-    rows.insert(rows.begin(), means.begin(), means.end());
-  }
-  study::mark_pareto_fronts(rows);
   // With PROXYGI_VALIDATION=1 (the tests) any validation message fails the run.
   if (const std::vector<std::string> messages = context->validation_messages(); !messages.empty()) {
     for (const std::string& message : messages) std::fprintf(stderr, "validation: %s\n", message.c_str());
@@ -139,13 +202,21 @@ int run_bench_chart(const ChartArgs& args) {
   report.reference_spp = args.reference_spp;
   report.lighting = args.lighting == "full" ? "full environment" : "environment band-limited to SH order 6";
   for (const study::ChartScene& chart : *scenes) report.scenes.push_back(chart.name);
-  if (Status written = write_chart_report(args.out, rows, report); !written)
-    return fail_runtime("bench chart: " + written.message());
-  if (args.json)
-    std::printf("%s\n", chart_report_json(rows, report).dump(2).c_str());
-  else
-    std::printf("%s", chart_summary_text(rows, report).c_str());
-  return kExitOk;
+  if (!args.shard.empty()) {
+    const ChartShard measured{report, args.quick, shard, units, std::move(rows)};
+    std::error_code created;
+    std::filesystem::create_directories(args.out, created);
+    if (created) return fail_runtime("bench chart: " + args.out + ": cannot create: " + created.message());
+    const std::filesystem::path path = std::filesystem::path(args.out) / kChartShardFile;
+    if (Status s = write_file_atomically(path, std::string_view(shard_to_json(measured))); !s)
+      return fail_runtime("bench chart: " + s.message());
+    std::printf("bench chart: shard %s measured units %zu..%zu of %zu (%zu rows) into %s\n", args.shard.c_str(), slice.begin,
+                slice.end, units, measured.rows.size(), path.string().c_str());
+    return kExitOk;
+  }
+  std::vector<study::ChartRow> chart_rows;
+  for (UnitRow& r : rows) chart_rows.push_back(std::move(r.row));
+  return finish_chart(args, std::move(chart_rows), report);
 }
 
 }  // namespace
@@ -174,6 +245,13 @@ void add_bench_chart_command(CLI::App& bench, CommandRunner& runner) {
       ->capture_default_str();
   command->add_flag("--quick", args->quick, "A small grid (default setting and each baseline), 1 and 4 spp");
   command->add_flag("--references-only", args->references_only, "Only render (or complete) the cached references");
+  command->add_option("--shard", args->shard, "I/N: measure only the I-th (0-based) of N contiguous runs of the chart's "
+                                              "units (scene x path tracing or setting) into OUT/bench-chart-shard.json");
+  command->add_option("--merge", args->merge, "Join shard folders (their bench-chart-shard.json) into the chart in --out")
+      ->expected(1, -1);
+  command->add_option("--timings-from", args->timings_from,
+                      "With --merge: take each row's ms per frame from this bench-chart-timings.json (to compare a "
+                      "merge with a single run byte for byte)");
   add_device_option(*command, args->device);
   command->callback([&runner, args] { runner = [args] { return run_bench_chart(*args); }; });
 }

@@ -97,6 +97,48 @@ fig.savefig(sys.argv[1], dpi=110, format="png")
 
 }  // namespace
 
+nlohmann::json chart_context_json(const ChartReportContext& context) {
+  return {{"device", context.device},   {"driver", context.driver},
+          {"size", context.size},       {"frames", context.frames},
+          {"timing_frames", context.timing_frames}, {"reference_spp", context.reference_spp},
+          {"lighting", context.lighting}, {"scenes", context.scenes}};
+}
+
+Result<ChartReportContext> chart_context_from_json(const nlohmann::json& json) {
+  try {
+    ChartReportContext context;
+    context.device = json.at("device").get<std::string>();
+    context.driver = json.at("driver").get<std::string>();
+    context.size = json.at("size").get<int>();
+    context.frames = json.at("frames").get<int>();
+    context.timing_frames = json.at("timing_frames").get<int>();
+    context.reference_spp = json.at("reference_spp").get<int>();
+    context.lighting = json.at("lighting").get<std::string>();
+    context.scenes = json.at("scenes").get<std::vector<std::string>>();
+    return context;
+  } catch (const nlohmann::json::exception& e) {
+    return make_error(std::string("chart context: ") + e.what());
+  }
+}
+
+std::string chart_scores_json(const std::vector<study::ChartRow>& rows, const ChartReportContext& context) {
+  nlohmann::json out;
+  out["context"] = chart_context_json(context);
+  out["rows"] = nlohmann::json::array();
+  for (const study::ChartRow& row : rows)
+    out["rows"].push_back({{"scene", row.scene}, {"label", study::row_label(row)}, {"default", row.is_default},
+                           {"relative_mse", row.relative_mse}, {"rmse", row.rmse}, {"ssim", row.ssim}, {"flip", row.flip}});
+  return out.dump(1) + "\n";
+}
+
+std::string chart_timings_json(const std::vector<study::ChartRow>& rows) {
+  nlohmann::json out;
+  out["rows"] = nlohmann::json::array();
+  for (const study::ChartRow& row : rows)
+    out["rows"].push_back({{"scene", row.scene}, {"label", study::row_label(row)}, {"ms_per_frame", row.milliseconds}});
+  return out.dump(1) + "\n";
+}
+
 std::string goal_scene(const std::vector<study::ChartRow>& rows) {
   for (const study::ChartRow& row : rows)
     if (row.scene == study::kAllScenes) return study::kAllScenes;
@@ -144,6 +186,8 @@ Status write_chart_report(const std::string& folder, const std::vector<study::Ch
   if (error) return make_error(folder + ": cannot create: " + error.message());
   const std::filesystem::path base = std::filesystem::path(folder) / "bench-chart";
   if (Status s = write_file_atomically(base.string() + ".csv", study::to_csv(rows)); !s) return s;
+  if (Status s = write_file_atomically(base.string() + "-scores.json", chart_scores_json(rows, context)); !s) return s;
+  if (Status s = write_file_atomically(base.string() + "-timings.json", chart_timings_json(rows)); !s) return s;
 
   std::ostringstream markdown;
   markdown << "# Speed–accuracy chart (`proxygi bench chart`)\n\n" << chart_summary_text(rows, context);

@@ -1,0 +1,131 @@
+#include "apps/bench_chart_shards.h"
+
+#include <algorithm>
+#include <map>
+#include <tuple>
+
+#include <nlohmann/json.hpp>
+
+namespace proxygi::app {
+namespace {
+
+using nlohmann::json;
+
+// Every field of a row: the shard file must carry it back exactly (doubles round-trip in JSON).
+json row_json(const study::ChartRow& row) {
+  return {{"scene", row.scene},        {"method", row.method},   {"sh_order", row.sh_order},
+          {"receiver_scale", row.receiver_scale}, {"upsampling", row.upsampling}, {"indirect", row.indirect},
+          {"samples", row.samples},    {"ms_per_frame", row.milliseconds}, {"relative_mse", row.relative_mse},
+          {"rmse", row.rmse},          {"ssim", row.ssim},       {"flip", row.flip},
+          {"default", row.is_default}};
+}
+
+study::ChartRow row_from_json(const json& j) {
+  study::ChartRow row;
+  row.scene = j.at("scene").get<std::string>();
+  row.method = j.at("method").get<std::string>();
+  row.sh_order = j.at("sh_order").get<int>();
+  row.receiver_scale = j.at("receiver_scale").get<int>();
+  row.upsampling = j.at("upsampling").get<std::string>();
+  row.indirect = j.at("indirect").get<std::string>();
+  row.samples = j.at("samples").get<int>();
+  row.milliseconds = j.at("ms_per_frame").get<double>();
+  row.relative_mse = j.at("relative_mse").get<double>();
+  row.rmse = j.at("rmse").get<double>();
+  row.ssim = j.at("ssim").get<double>();
+  row.flip = j.at("flip").get<double>();
+  row.is_default = j.at("default").get<bool>();
+  return row;
+}
+
+std::string shard_name(const run::Shard& shard) { return std::to_string(shard.index) + "/" + std::to_string(shard.count); }
+
+}  // namespace
+
+std::string shard_to_json(const ChartShard& shard) {
+  json out;
+  out["context"] = chart_context_json(shard.context);
+  out["quick"] = shard.quick;
+  out["shard"] = {shard.shard.index, shard.shard.count};
+  out["units"] = shard.units;
+  out["rows"] = json::array();
+  for (const UnitRow& r : shard.rows) {
+    json row = row_json(r.row);
+    row["unit"] = r.unit;
+    out["rows"].push_back(row);
+  }
+  return out.dump(1) + "\n";
+}
+
+Result<ChartShard> shard_from_json(std::string_view text, const std::string& where) {
+  try {
+    const json j = json::parse(text.begin(), text.end());
+    ChartShard shard;
+    auto context = chart_context_from_json(j.at("context"));
+    if (!context) return make_error(where + ": " + context.message());
+    shard.context = std::move(*context);
+    shard.quick = j.at("quick").get<bool>();
+    shard.shard = {j.at("shard").at(0).get<int>(), j.at("shard").at(1).get<int>()};
+    if (shard.shard.count < 1 || shard.shard.index < 0 || shard.shard.index >= shard.shard.count)
+      return make_error(where + ": shard " + shard_name(shard.shard) + " is invalid");
+    shard.units = j.at("units").get<std::size_t>();
+    for (const json& row : j.at("rows")) shard.rows.push_back({row.at("unit").get<std::size_t>(), row_from_json(row)});
+    return shard;
+  } catch (const json::exception& e) {
+    return make_error(where + ": not a " + std::string(kChartShardFile) + ": " + e.what());
+  }
+}
+
+Result<std::vector<study::ChartRow>> merge_shards(const std::vector<ChartShard>& shards, ChartReportContext& context) {
+  if (shards.empty()) return make_error("merge: no shards");
+  const ChartShard& first = shards.front();
+  const json first_context = chart_context_json(first.context);
+  std::vector<bool> seen(std::size_t(first.shard.count), false);
+  std::vector<UnitRow> all;
+  for (const ChartShard& shard : shards) {
+    const std::string name = "shard " + shard_name(shard.shard);
+    if (chart_context_json(shard.context) != first_context || shard.quick != first.quick || shard.units != first.units)
+      return make_error("merge: " + name + " measured another chart than shard " + shard_name(first.shard) +
+                        " (device, size, frames, samples, lighting, scenes or grid differ)");
+    if (shard.shard.count != first.shard.count)
+      return make_error("merge: " + name + " is of " + std::to_string(shard.shard.count) + " shards, shard " +
+                        shard_name(first.shard) + " of " + std::to_string(first.shard.count));
+    if (seen[std::size_t(shard.shard.index)]) return make_error("merge: " + name + " given twice");
+    seen[std::size_t(shard.shard.index)] = true;
+    const run::IndexRange slice = run::shard_slice(shard.units, shard.shard);
+    for (const UnitRow& row : shard.rows) {
+      if (!slice.contains(row.unit))
+        return make_error("merge: " + name + ": unit " + std::to_string(row.unit) + " is outside its slice [" +
+                          std::to_string(slice.begin) + ", " + std::to_string(slice.end) + ")");
+      all.push_back(row);
+    }
+  }
+  for (std::size_t i = 0; i < seen.size(); ++i)
+    if (!seen[i]) return make_error("merge: shard " + std::to_string(i) + "/" + std::to_string(seen.size()) + " is missing");
+  // Slices tile the units in order, so ordering the shards' rows by unit (stable within a unit)
+  // reproduces a single run's row order.
+  std::stable_sort(all.begin(), all.end(), [](const UnitRow& a, const UnitRow& b) { return a.unit < b.unit; });
+  context = first.context;
+  std::vector<study::ChartRow> rows;
+  for (UnitRow& r : all) rows.push_back(std::move(r.row));
+  return rows;
+}
+
+Status replace_timings(std::vector<study::ChartRow>& rows, std::string_view timings_text, const std::string& where) {
+  std::map<std::pair<std::string, std::string>, double> measured;
+  try {
+    const json j = json::parse(timings_text.begin(), timings_text.end());
+    for (const json& row : j.at("rows"))
+      measured[{row.at("scene").get<std::string>(), row.at("label").get<std::string>()}] = row.at("ms_per_frame").get<double>();
+  } catch (const json::exception& e) {
+    return make_error(where + ": not a bench-chart-timings.json: " + e.what());
+  }
+  for (study::ChartRow& row : rows) {
+    const auto found = measured.find({row.scene, study::row_label(row)});
+    if (found == measured.end()) return make_error(where + ": no time for " + row.scene + " / " + study::row_label(row));
+    row.milliseconds = found->second;
+  }
+  return {};
+}
+
+}  // namespace proxygi::app
