@@ -28,10 +28,10 @@ Status run_temporal_check(CheckContext& c);
 Status run_differential_check(CheckContext& c);
 Status run_budget_check(CheckContext& c);
 
-// Writes the images of one frame for the report (report_dir/<scenario>/<check>/frame_N_*.png)
+// Writes the images (linear; PNGs clamp to [0, 1]) of one frame for the report (report_dir/<scenario>/<check>/frame_N_*.png)
 // and keeps them as data URIs; no-op without a report folder.
-Status attach_images(CheckContext& c, int frame, const Rgba8* golden, const Rgba8& actual, const image::ImageF* diff,
-                     const image::ImageF* flip);
+Status attach_images(CheckContext& c, int frame, const image::ImageF* golden, const image::ImageF& actual,
+                     const image::ImageF* diff, const image::ImageF* flip);
 
 // Reads a text golden (tracks.json, temporal.json), or nothing when absent.
 Result<std::optional<std::string>> read_text(const std::filesystem::path& path);

@@ -196,7 +196,8 @@ Status run_differential_check(CheckContext& c) {
       c.result.details.push_back("frame " + std::to_string(a[i].frame) + ": " + comparison->summary);
       if (c.result.first_failing_frame < 0) {
         c.result.first_failing_frame = a[i].frame;
-        if (Status s = attach_images(c, a[i].frame, &a[i].final_frame, b[i].final_frame, &comparison->diff, nullptr); !s) return s;
+        const image::ImageF first = to_linear(a[i].final_frame), second = to_linear(b[i].final_frame);
+        if (Status s = attach_images(c, a[i].frame, &first, second, &comparison->diff, nullptr); !s) return s;
       }
     }
     if (comparison->failing_fraction > worst) worst = comparison->failing_fraction, worst_summary = comparison->summary;

@@ -3,7 +3,8 @@
 // unless given. Tiers: the device family (device_family() of the Vulkan device name: llvmpipe,
 // nvidia, amd, intel, apple, other), then the fallback tier "any", whose goldens are compared
 // with each check's thresholds multiplied by its fallback_scale. Blessing writes the family tier.
-// Files: frame_%05d.png (images, 8-bit sRGB), tracks.json (full precision, %.17g), temporal.json.
+// Files: frame_%05d.png (final frames, 8-bit sRGB), frame_%05d.exr (linear AOVs, 32-bit float),
+// tracks.json (full precision, %.17g), temporal.json.
 #include <filesystem>
 #include <optional>
 #include <string>

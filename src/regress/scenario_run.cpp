@@ -10,26 +10,14 @@
 namespace proxygi::regress {
 namespace {
 
-Rgba8 encode(const image::ImageF& image, float scale) {
-  Rgba8 out{image.width, image.height, std::vector<std::uint8_t>(std::size_t(image.width) * std::size_t(image.height) * 4)};
-  for (std::size_t i = 0; i < image.pixels.size(); ++i) {
-    for (int c = 0; c < 3; ++c) {
-      float v = image.pixels[i][c] * scale;
-      v = std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.0f;
-      out.pixels[i * 4 + std::size_t(c)] = std::uint8_t(image::linear_to_srgb(v) * 255.0f + 0.5f);
-    }
-    out.pixels[i * 4 + 3] = 255;
-  }
-  return out;
+image::ImageF scaled(image::ImageF image, float scale) {
+  for (glm::vec4& p : image.pixels) p = glm::vec4(glm::vec3(p) * scale, 1.0f);
+  return image;
 }
 
 }  // namespace
 
-const Rgba8& RenderedFrame::image(Aov aov) const {
-  if (aov == Aov::irradiance) return irradiance;
-  if (aov == Aov::albedo) return albedo;
-  return final_frame;
-}
+const image::ImageF& RenderedFrame::aov(Aov aov) const { return aov == Aov::albedo ? albedo : irradiance; }
 
 std::vector<std::uint8_t> region_mask(const std::vector<std::uint8_t>& classes, Region region) {
   std::vector<std::uint8_t> mask(classes.size());
@@ -88,10 +76,10 @@ Result<RenderedFrame> ScenarioRun::render(int frame, bool aovs) {
   if (aovs) {
     auto irradiance = renderer_->frame().read_irradiance();
     if (!irradiance) return irradiance.error();
-    out.irradiance = encode(*irradiance, float(1.0 / std::numbers::pi));
+    out.irradiance = scaled(std::move(*irradiance), float(1.0 / std::numbers::pi));
     auto albedo = renderer_->frame().read_gbuffer_albedo();
     if (!albedo) return albedo.error();
-    out.albedo = encode(*albedo, 1.0f);
+    out.albedo = scaled(std::move(*albedo), 1.0f);
   }
   return out;
 }

@@ -10,6 +10,7 @@
 #include "base/result.h"
 #include "gpu/context.h"
 #include "gpu/scene_renderer.h"
+#include "image/image.h"
 #include "regress/faults.h"
 #include "regress/scenario.h"
 #include "world/world.h"
@@ -28,9 +29,9 @@ struct RenderedFrame {
   int frame = 0;
   Rgba8 final_frame;
   std::vector<std::uint8_t> classes;  // PixelClass per pixel, from the G-buffer
-  Rgba8 irradiance;                   // E/π, sRGB-encoded (when asked)
-  Rgba8 albedo;                       // G-buffer albedo, sRGB-encoded (when asked)
-  const Rgba8& image(Aov aov) const;
+  image::ImageF irradiance;           // E/π, linear float (when asked)
+  image::ImageF albedo;               // G-buffer albedo, linear float (when asked)
+  const image::ImageF& aov(Aov aov) const;  // irradiance or albedo (not the final frame)
 };
 
 // Pixels of `region` (1) in a frame's classes.

@@ -1,6 +1,7 @@
 #include "regress/tolerance_study.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -18,7 +19,7 @@ std::string format(const char* pattern, double a, double b = 0.0) {
 
 // Largest code difference and the fraction of region pixels differing at all, over frames.
 struct ImageSpread {
-  int largest = 0;
+  double largest = 0.0;  // codes (fractions of a code for EXR goldens)
   double fraction = 0.0;
 };
 
@@ -46,7 +47,10 @@ Result<std::vector<CalibrationRow>> calibrate(gpu::Context& context, const std::
             auto other = sessions[std::size_t(r)]->frame(frame);
             if (!other) return other.error();
             const auto mask = region_mask((*base)->classes, check.region);
-            auto d = compare_images((*other)->image(check.aov), (*base)->image(check.aov), mask, {0, 0.0});
+            auto codes = [&](const RenderedFrame& f) {
+              return check.aov == Aov::final_frame ? codes_of(f.final_frame) : codes_of(f.aov(check.aov));
+            };
+            auto d = compare_images(codes(**other), codes(**base), mask, {0, 0.0});
             if (!d) return d.error();
             spread.largest = std::max(spread.largest, d->largest);
             spread.fraction = std::max(spread.fraction, d->failing_fraction);
@@ -54,11 +58,11 @@ Result<std::vector<CalibrationRow>> calibrate(gpu::Context& context, const std::
         }
         if (check.type == CheckType::image) {
           row.hand_set = format("%.0f codes, %.3f %% of pixels", check.image.pixel_threshold, 100.0 * check.image.max_failing_fraction);
-          row.spread = format("largest %.0f codes, %.3f %% of pixels differ", spread.largest, 100.0 * spread.fraction);
-          row.proposed = format("%.0f codes, %.3f %% of pixels", std::max(1, 2 * spread.largest), std::max(0.0005, 3.0 * spread.fraction) * 100.0);
+          row.spread = format("largest %.3g codes, %.3f %% of pixels differ", spread.largest, 100.0 * spread.fraction);
+          row.proposed = format("%.0f codes, %.3f %% of pixels", std::max(1.0, std::ceil(2.0 * spread.largest)), std::max(0.0005, 3.0 * spread.fraction) * 100.0);
         } else {
           row.hand_set = format("%.3f codes", check.temporal_tolerance);
-          row.spread = format("largest %.0f codes between runs", spread.largest);
+          row.spread = format("largest %.3g codes between runs", spread.largest);
           row.proposed = format("%.3f codes", std::max(0.05, 2.0 * spread.largest * spread.fraction));
         }
       } else if (check.type == CheckType::tracks) {
