@@ -1,5 +1,5 @@
 // proxygi regress SCENARIO...|DIR [--filter S] [--shard I/N] [--bless CHECK...] [--report DIR]
-//                 [--goldens DIR] [--calibrate N] [--sensitivity] [--device NAME|INDEX]
+//                 [--goldens DIR] [--calibrate N [--write]] [--sensitivity] [--device NAME|INDEX]
 // proxygi regress --merge SHARD_DIR... --report DIR
 // Exit 0: every check passed (or was skipped or blessed); 1: a check failed, has no golden or
 // errored; 2: bad input (unreadable scenario, bad flag). The runner is src/regress.
@@ -24,6 +24,7 @@ struct RegressArgs {
   std::string report;
   std::string goldens;
   int calibrate = 0;
+  bool write = false;
   bool sensitivity = false;
   std::vector<std::string> merge;
   std::string device;
@@ -91,6 +92,7 @@ int validation_failure(const gpu::Context& context) {
 int run_regress(const RegressArgs& args) {
   if (!args.merge.empty()) return run_merge(args);
   if (args.inputs.empty()) return fail_bad_input("regress: give scenario files or folders (or --merge)");
+  if (args.write && args.calibrate <= 0) return fail_bad_input("regress: --write needs --calibrate N");
   regress::RunOptions options;
   options.assets_dir = assets_dir();
   if (!args.shard.empty()) {
@@ -114,7 +116,12 @@ int run_regress(const RegressArgs& args) {
     if (!rows) return fail_runtime(rows.message());
     const std::string table = regress::calibration_table(*rows);
     if (Status s = print_table(table, args.report, "calibration.md"); !s) return fail_runtime(s.message());
-    return validation_failure(**context);
+    if (int failed = validation_failure(**context)) return failed;
+    if (!args.write) return kExitOk;
+    auto diff = regress::write_calibration(*rows, options.assets_dir);
+    if (!diff) return fail_runtime("--calibrate --write: " + diff.message());
+    std::printf("%s", diff->empty() ? "calibrate: every scenario already holds the proposed tolerances\n" : diff->c_str());
+    return kExitOk;
   }
   if (args.sensitivity) {
     options.on_result = nullptr;
@@ -152,6 +159,8 @@ void add_regress_command(CLI::App& app, CommandRunner& runner) {
   command->add_option("--report", args->report, "Write report.html, results.json and junit.xml into this folder");
   command->add_option("--goldens", args->goldens, "Golden folder (default: goldens/ beside each scenario)");
   command->add_option("--calibrate", args->calibrate, "Run each check N times and propose thresholds from the spread");
+  command->add_flag("--write", args->write,
+                    "With --calibrate: write the proposed tolerances into the scenario files (atomically) and print the diff");
   command->add_flag("--sensitivity", args->sensitivity, "Apply known small faults and report which checks catch each");
   command->add_option("--merge", args->merge, "Merge shard report folders (their results.json) into --report")->expected(1, -1);
   add_device_option(*command, args->device);

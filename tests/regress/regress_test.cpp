@@ -5,6 +5,7 @@
 
 #include "regress/golden_store.h"
 #include "regress/image_compare.h"
+#include "regress/json_edit.h"
 #include "regress/report.h"
 #include "regress/runner.h"
 #include "regress/scenario.h"
@@ -149,6 +150,78 @@ TEST(Results, JsonRoundTripMergeAndReports) {
   EXPECT_NE(html.find("<svg class=\"plot\""), std::string::npos);
   const std::string xml = junit_xml(*merged);
   EXPECT_NE(xml.find("failures=\"1\""), std::string::npos);
+}
+
+// Budget times live in timings.json only: results.json, junit.xml and report.html of two runs
+// that measured different times are byte-identical, and timings.json carries the times back.
+TEST(Results, TimingsStayOutOfTheDeterministicFiles) {
+  CheckResult budget;
+  budget.scenario = "walk";
+  budget.scenario_file = "tests/regress/walk.json";
+  budget.check = "budget";
+  budget.type = "budget";
+  budget.message = "median within the 400.0 ms per frame budget";
+  budget.timings_ms = {12.5, 11.25, 13.0};
+  RunResults first{"dev", "llvmpipe", {budget}};
+  RunResults second = first;
+  second.checks[0].timings_ms = {99.0, 98.0, 97.5};
+  EXPECT_EQ(to_json(first), to_json(second));
+  EXPECT_EQ(junit_xml(first), junit_xml(second));
+  EXPECT_EQ(report_html(first), report_html(second));
+  EXPECT_NE(timings_to_json(first), timings_to_json(second));
+  EXPECT_DOUBLE_EQ(median_ms(first.checks[0].timings_ms), 12.5);
+
+  auto back = results_from_json(to_json(first), "results.json");
+  ASSERT_TRUE(back.ok()) << back.message();
+  EXPECT_TRUE(back->checks[0].timings_ms.empty());
+  ASSERT_TRUE(attach_timings(timings_to_json(first), "timings.json", *back).ok());
+  EXPECT_EQ(back->checks[0].timings_ms, first.checks[0].timings_ms);
+  EXPECT_EQ(timings_to_json(*back), timings_to_json(first));
+  RunResults other{"dev", "llvmpipe", {}};
+  const Status unknown = attach_timings(timings_to_json(first), "timings.json", other);
+  ASSERT_FALSE(unknown.ok());
+  EXPECT_NE(unknown.message().find("walk/budget: not in results.json"), std::string::npos) << unknown.message();
+}
+
+// --calibrate --write edits values in place: the layout stays, absent keys are appended to their
+// check, strings holding braces or the key's name are not mistaken for structure.
+TEST(JsonEdit, ReplacesAndAppendsKeepingTheLayout) {
+  const std::string text =
+      "{\n  \"description\": \"a {tricky} \\\"checks\\\" text\",\n  \"checks\": [\n"
+      "    {\"name\": \"frame\", \"type\": \"image\", \"pixel_threshold\": 3, \"max_failing_fraction\": 0.001},\n"
+      "    {\"name\": \"tracks\", \"type\": \"tracks\", \"frames\": [1, 2]}\n  ]\n}\n";
+  auto edited = edit_check_fields(text, {{0, "pixel_threshold", "1"}, {1, "joint_mm", "0.01"}, {1, "proxy_mm", "0.02"}});
+  ASSERT_TRUE(edited.ok()) << edited.message();
+  const std::string expected =
+      "{\n  \"description\": \"a {tricky} \\\"checks\\\" text\",\n  \"checks\": [\n"
+      "    {\"name\": \"frame\", \"type\": \"image\", \"pixel_threshold\": 1, \"max_failing_fraction\": 0.001},\n"
+      "    {\"name\": \"tracks\", \"type\": \"tracks\", \"frames\": [1, 2], \"joint_mm\": 0.01, \"proxy_mm\": 0.02}\n  ]\n}\n";
+  EXPECT_EQ(*edited, expected);
+  const std::string diff = line_diff(text, *edited, "s.json");
+  EXPECT_NE(diff.find("@@ line 4 @@\n-    {\"name\": \"frame\", \"type\": \"image\", \"pixel_threshold\": 3"), std::string::npos) << diff;
+  EXPECT_NE(diff.find("@@ line 5 @@"), std::string::npos) << diff;
+  EXPECT_EQ(diff.find("@@ line 2 @@"), std::string::npos) << diff;
+  EXPECT_EQ(line_diff(text, text, "s.json"), "");
+  EXPECT_FALSE(edit_check_fields(text, {{2, "joint_mm", "1"}}).ok());  // no third check
+  EXPECT_FALSE(edit_check_fields("[1, 2]", {{0, "a", "1"}}).ok());
+}
+
+// AOV goldens are linear EXR: compared in sRGB codes without rounding, so a change of a fraction
+// of a code is seen (an 8-bit golden could not), and values above 1 do not clip.
+TEST(ImageCompare, LinearImagesCompareWithoutRounding) {
+  image::ImageF golden(2, 1, glm::vec4(0.5f, 0.5f, 0.5f, 1.0f));
+  image::ImageF actual = golden;
+  actual.pixels[1].x = image::srgb_to_linear((image::linear_to_srgb(0.5f) * 255.0f + 0.4f) / 255.0f);  // +0.4 codes
+  const std::vector<std::uint8_t> all(2, 1);
+  auto d = compare_images(codes_of(actual), codes_of(golden), all, {0, 0.0});
+  ASSERT_TRUE(d.ok()) << d.message();
+  EXPECT_EQ(d->failing, 1u);
+  EXPECT_NEAR(d->largest, 0.4, 1e-3);
+  EXPECT_TRUE(compare_images(codes_of(actual), codes_of(golden), all, {1, 0.0})->passed);
+  image::ImageF bright = golden, brighter = golden;
+  bright.pixels[0].x = 2.0f;
+  brighter.pixels[0].x = 2.5f;
+  EXPECT_GT(compare_images(codes_of(brighter), codes_of(bright), all, {0, 0.0})->largest, 20.0);
 }
 
 }  // namespace
