@@ -1,5 +1,6 @@
 # --bless writes only the named checks, a missing golden fails as "new" with its bless command,
-# and a family without goldens falls back to the "any" tier. -DPROXYGI=... -DSOURCE=... -DWORK=...
+# a family without goldens falls back to the "any" tier, and AOVs are blessed as EXR.
+# -DPROXYGI=... -DSOURCE=... -DWORK=...
 file(REMOVE_RECURSE ${WORK})
 file(COPY ${SOURCE}/tests/regress/goldens/walk DESTINATION ${WORK}/goldens)
 file(REMOVE_RECURSE ${WORK}/goldens/walk/llvmpipe/frame ${WORK}/goldens/walk/llvmpipe/ground)
@@ -31,3 +32,19 @@ regress(0 out)
 if(NOT out MATCHES "pass     walk/frame")
   message(FATAL_ERROR "the any tier was not used:\n${out}")
 endif()
+# AOV goldens are linear EXR: blessing walk/irradiance writes frame_00030.exr (no PNG) into the
+# family tier, and the next run compares against it.
+file(REMOVE_RECURSE ${WORK}/goldens/walk/any/irradiance)
+function(irradiance expect_code expect_out)
+  execute_process(COMMAND ${PROXYGI} regress ${walk} --goldens ${WORK}/goldens --filter walk/irradiance ${ARGN}
+                  RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT code EQUAL ${expect_code} OR NOT out MATCHES "${expect_out}")
+    message(FATAL_ERROR "regress --filter walk/irradiance ${ARGN}: exit ${code}, expected ${expect_code} and '${expect_out}'\n${out}\n${err}")
+  endif()
+endfunction()
+irradiance(1 "new      walk/irradiance")
+irradiance(0 "frame 30: new golden [^\n]*llvmpipe/irradiance/frame_00030.exr" --bless walk/irradiance)
+if(EXISTS ${WORK}/goldens/walk/llvmpipe/irradiance/frame_00030.png)
+  message(FATAL_ERROR "an AOV was blessed as PNG")
+endif()
+irradiance(0 "pass     walk/irradiance \\(image[^\n]*largest 0\n")
