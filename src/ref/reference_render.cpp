@@ -146,6 +146,7 @@ PixelFeatures render_features(const EmbreeScene& scene, const scene::CameraState
   out.albedo = image::ImageF(width, height);
   out.normal = image::ImageF(width, height);
   out.depth = image::ImageF(width, height);
+  out.character = out.mask;
   const glm::vec3 forward = glm::normalize(camera.target - camera.eye);
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
@@ -157,6 +158,7 @@ PixelFeatures render_features(const EmbreeScene& scene, const scene::CameraState
       out.albedo.at(x, y) = glm::vec4(hit->albedo, 1.0f);
       out.normal.at(x, y) = glm::vec4(hit->shading_normal, 1.0f);
       out.depth.at(x, y) = glm::vec4(depth, depth, depth, 1.0f);
+      if (hit->character) out.character.at(x, y) = glm::vec4(1.0f);
     }
   return out;
 }

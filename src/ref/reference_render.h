@@ -58,6 +58,7 @@ struct PixelFeatures {
   image::ImageF albedo;  // rgb albedo, a = mask
   image::ImageF normal;  // rgb unit world normal facing the camera, a = mask
   image::ImageF depth;   // rgb = eye depth in meters (0 where no hit), a = mask
+  image::ImageF character;  // rgb = 1 where the center ray hits a character mesh, else 0; a = 1
 };
 
 struct RenderProgress {
