@@ -31,6 +31,9 @@ std::vector<MethodSetting> method_grid(bool quick) {
         for (settings::IndirectOperator indirect : operators)
           grid.push_back({settings::ShadingMethod::image_space, order, scale, upsampling, indirect});
       }
+  // What the lit ground adds: the default setting with render.ground_bounce off.
+  grid.push_back({settings::ShadingMethod::image_space, defaults.sh_order, defaults.receiver_scale, defaults.upsampling,
+                  defaults.indirect_operator, false});
   for (int order : orders)
     grid.push_back({settings::ShadingMethod::vertex, order, 1, settings::Upsampling::bilateral, defaults.indirect_operator});
   for (int scale : scales)
@@ -43,6 +46,7 @@ study::ChartRow describe_setting(const MethodSetting& setting, const std::string
   const settings::RenderSettings defaults;
   study::ChartRow row;
   row.scene = scene;
+  row.ground_bounce = setting.ground_bounce;
   switch (setting.method) {
     case settings::ShadingMethod::image_space:
       row.method = "proxy";
@@ -51,7 +55,8 @@ study::ChartRow describe_setting(const MethodSetting& setting, const std::string
       if (setting.receiver_scale > 1) row.upsampling = std::string(settings::name_of(setting.upsampling));
       row.indirect = std::string(settings::name_of(setting.indirect));
       row.is_default = setting.sh_order == defaults.sh_order && setting.receiver_scale == defaults.receiver_scale &&
-                       setting.upsampling == defaults.upsampling && setting.indirect == defaults.indirect_operator;
+                       setting.upsampling == defaults.upsampling && setting.indirect == defaults.indirect_operator &&
+                       setting.ground_bounce == defaults.ground_bounce;
       break;
     case settings::ShadingMethod::vertex:
       row.method = "vertex";
@@ -81,6 +86,7 @@ Status run_raster_methods(gpu::Context& context, const study::ChartScene& chart,
     render.receiver_scale = setting.receiver_scale;
     render.upsampling = setting.upsampling;
     render.indirect_operator = setting.indirect;
+    render.ground_bounce = setting.ground_bounce;
     grid_settings.push_back(render);
   }
   auto renderer = gpu::SceneRenderer::create(context, std::shared_ptr<const world::World>(std::move(*world)),

@@ -1,5 +1,6 @@
 // proxygi compare TEST REFERENCE [--json] [--mask MASK.png] [--error-image OUT.png]: RMSE,
-// relative MSE, SSIM and FLIP of a test image against a reference, over receiver pixels.
+// relative MSE, SSIM and FLIP of a test image against a reference, and both images' mean
+// luminance, over receiver pixels.
 // Unreadable images, a size mismatch or an empty mask exit with code 2; a failed error-image
 // write exits with code 1.
 #include <algorithm>
@@ -100,6 +101,8 @@ int run_compare(const CompareArgs& args) {
       {"height", test->height},
       {"receiver_pixels", rmse->pixels},
       {"rmse", rmse->mean},
+      {"test_mean_luminance", ref::mean_luminance(*test, receivers)},
+      {"reference_mean_luminance", ref::mean_luminance(*reference, receivers)},
       {"relative_mse", relative->mean},
       {"relative_mse_epsilon", ref::kRelativeMseEpsilon},
       {"ssim", has_ssim ? nlohmann::json(ssim_mean) : nlohmann::json()},
@@ -115,6 +118,9 @@ int run_compare(const CompareArgs& args) {
   }
   std::printf("test       %s\nreference  %s\n", args.test.c_str(), args.reference.c_str());
   std::printf("pixels     %zu receivers of %dx%d\n", rmse->pixels, test->width, test->height);
+  const double test_mean = ref::mean_luminance(*test, receivers), reference_mean = ref::mean_luminance(*reference, receivers);
+  std::printf("luminance  %.6g test, %.6g reference (ratio %.4f)\n", test_mean, reference_mean,
+              reference_mean != 0.0 ? test_mean / reference_mean : 0.0);
   std::printf("RMSE       %.6g\n", rmse->mean);
   std::printf("relMSE     %.6g (epsilon %.g)\n", relative->mean, ref::kRelativeMseEpsilon);
   if (has_ssim) {

@@ -6,7 +6,9 @@
 #include <vector>
 
 #include "sh/basis.h"
+#include "sh/environment.h"
 #include "sh/exponential.h"
+#include "sh/ground_bounce.h"
 #include "sh/occlusion_tables.h"
 #include "sh/product.h"
 #include "sh/rotation.h"
@@ -120,6 +122,25 @@ void sh_exp_exact(benchmark::State& state) {
 }
 
 }  // namespace
+
+// The frame tables' LH cubes (16² per face) of the default sky, r, g, b: what every table build
+// pays, and what the ground bounce adds (E_g, L' and a second set of cubes).
+void sh_lighting_cubes(benchmark::State& state) {
+  const RgbSh sky = project_sky(4, AnalyticSky{});
+  for (auto _ : state)
+    for (const auto& channel : sky.channels) benchmark::DoNotOptimize(make_lighting_cube_map(4, channel, 16));
+}
+BENCHMARK(sh_lighting_cubes)->Name("sh/lighting_cubes/4")->Unit(benchmark::kMillisecond);
+
+void sh_ground_lit_cubes(benchmark::State& state) {
+  const RgbSh sky = project_sky(4, AnalyticSky{});
+  for (auto _ : state)
+    for (const auto& channel : sky.channels) {
+      const std::vector<double> lit = replace_below_horizon(4, channel, 0.8 * ground_irradiance(4, channel) / kPi);
+      benchmark::DoNotOptimize(make_lighting_cube_map(4, lit, 16));
+    }
+}
+BENCHMARK(sh_ground_lit_cubes)->Name("sh/ground_lit_cubes/4")->Unit(benchmark::kMillisecond);
 
 #define PROXYGI_SH_BENCHMARKS(ORDER)                                                                                 \
   BENCHMARK(sh_basis<ORDER>)->Name("sh/basis/" #ORDER);                                                              \

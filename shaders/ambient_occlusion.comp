@@ -9,8 +9,9 @@
 // and the formula is exact for the adjusted sphere. w is the sphere-of-influence fade of the
 // shadow table (0 at s = 1/η_shadow, smoothstep over 4 rows), so AO and SHEXP cover the same
 // receivers. E(N) = √4π (LH(N))_0 per channel: the unshadowed irradiance of the environment's
-// SH, the same cube maps exponentiate.comp reads. The product over overlapping spheres is the
-// usual AO independence assumption (it over-darkens where spheres overlap; SHEXP does not).
+// SH, the same cube maps exponentiate.comp reads (the ground-lit set above the ground). The
+// product over overlapping spheres is the usual AO independence assumption (it over-darkens
+// where spheres overlap; SHEXP does not).
 // Output per receiver: direct (E, A), indirect 0, shaded (E, eye depth).
 // CPU twin: render::ambient_occlusion (src/render/baselines.h).
 #extension GL_GOOGLE_include_directive : require
@@ -23,7 +24,7 @@ layout(local_size_x = kFrameLocalSize, local_size_y = kFrameLocalSize) in;
 layout(std140, set = 0, binding = kAoBindFrame) uniform Frame { FrameConstants frame; };
 layout(std430, set = 0, binding = kAoBindReceivers) readonly buffer Receivers { Receiver receivers[]; };
 layout(std140, set = 0, binding = kAoBindProxies) uniform Proxies { ProxySphere proxies[kMaxProxies]; };
-layout(std430, set = 0, binding = kAoBindLightingCube) readonly buffer LightingCube { float lighting_cube[]; };  // r, g, b cubes
+layout(std430, set = 0, binding = kAoBindLightingCube) readonly buffer LightingCube { float lighting_cube[]; };  // r, g, b cubes, twice
 layout(std430, set = 0, binding = kAoBindDirect) writeonly buffer Direct { vec4 direct[]; };
 layout(std430, set = 0, binding = kAoBindIndirect) writeonly buffer Indirect { vec4 indirect[]; };
 layout(std430, set = 0, binding = kAoBindShaded) writeonly buffer Shaded { vec4 shaded[]; };
@@ -73,8 +74,9 @@ void main() {
     float covered = influence_fade(sine, eta, rows) * sine * sine * max(dot(normal, direction), 0.0);
     unoccluded *= 1.0 - clamp(covered, 0.0, 1.0);
   }
-  vec3 unshadowed = kSqrtFourPi * vec3(lighting_lookup_dc(0, normal), lighting_lookup_dc(1, normal),
-                                       lighting_lookup_dc(2, normal));
+  int set = lighting_cube_set(p);
+  vec3 unshadowed = kSqrtFourPi * vec3(lighting_lookup_dc(set, normal), lighting_lookup_dc(set + 1, normal),
+                                       lighting_lookup_dc(set + 2, normal));
   vec3 irradiance = max(unoccluded * unshadowed, vec3(0.0));
   direct[index] = vec4(irradiance, unoccluded);
   shaded[index] = vec4(irradiance, r.position_depth.w);

@@ -1,6 +1,7 @@
 #version 460
 // Exponentiation and direct shading (frame step 5): O_p = exp*(f) by HYB (DC isolation, OL on
-// f̂/2^s, s squarings), then E_direct = O_p · LH(N) per colour from the LH cube maps.
+// f̂/2^s, s squarings), then E_direct = O_p · LH(N) per colour from the LH cube maps (the
+// ground-lit set for receivers above the ground, lighting_cube_set).
 // Output per receiver: (E_r, E_g, E_b, (O_p)_0). CPU twin: render::exponentiate_and_shade.
 #extension GL_GOOGLE_include_directive : require
 #include "frame_common.glsl"
@@ -16,7 +17,7 @@ layout(std140, set = 0, binding = kExponentiateBindFrame) uniform Frame { FrameC
 layout(std430, set = 0, binding = kExponentiateBindReceivers) readonly buffer Receivers { Receiver receivers[]; };
 layout(std430, set = 0, binding = kExponentiateBindLogOcclusion) readonly buffer LogOcclusion { float log_occlusion[]; };
 layout(std430, set = 0, binding = kExponentiateBindOptimalLinear) readonly buffer OptimalLinear { vec2 optimal_linear[]; };  // (a, b) rows
-layout(std430, set = 0, binding = kExponentiateBindLightingCube) readonly buffer LightingCube { float lighting_cube[]; };   // r, g, b cubes
+layout(std430, set = 0, binding = kExponentiateBindLightingCube) readonly buffer LightingCube { float lighting_cube[]; };   // r, g, b cubes, twice
 layout(std430, set = 0, binding = kExponentiateBindDirect) writeonly buffer Direct { vec4 direct[]; };
 
 vec2 optimal_linear_lookup(float norm) {
@@ -48,8 +49,9 @@ void main() {
   if (norm_squared == 0.0 && f[0] == 0.0) {
     // No proxy reaches this receiver: O_p = a(0)·1, so only LH's DC coefficient matters.
     float g0 = optimal_linear_lookup(0.0).x * kSqrtFourPi;
-    vec3 unshadowed = vec3(lighting_lookup_dc(0, r.normal.xyz), lighting_lookup_dc(1, r.normal.xyz),
-                           lighting_lookup_dc(2, r.normal.xyz));
+    int set = lighting_cube_set(r.position_depth.xyz);
+    vec3 unshadowed = vec3(lighting_lookup_dc(set, r.normal.xyz), lighting_lookup_dc(set + 1, r.normal.xyz),
+                           lighting_lookup_dc(set + 2, r.normal.xyz));
     direct[index] = vec4(max(g0 * unshadowed, vec3(0.0)), g0);
     return;
   }
@@ -74,9 +76,10 @@ void main() {
   for (int i = 0; i < SH_COUNT; ++i) g[i] *= dc;
 
   vec3 irradiance;
+  int set = lighting_cube_set(r.position_depth.xyz);
   for (int channel = 0; channel < 3; ++channel) {
     float lh[SH_COUNT];
-    lighting_lookup(channel, r.normal.xyz, lh);
+    lighting_lookup(set + channel, r.normal.xyz, lh);
     float sum = 0.0;
     for (int i = 0; i < SH_COUNT; ++i) sum += g[i] * lh[i];
     irradiance[channel] = max(sum, 0.0);

@@ -1,8 +1,13 @@
 // LH(N) lookups in the per-channel cube maps (sh/environment.h layout; CPU twin
 // render::lookup_lighting_cube). Include after declaring `frame` (FrameConstants: tables.w is
-// the face size) and the `lighting_cube` float buffer, with SH_COUNT defined.
+// the face size) and the `lighting_cube` float buffer, with SH_COUNT defined. `channel` counts
+// cubes: 0..2 the environment's r, g, b, kGroundLitCubes + 0..2 the ground-lit ones.
 #ifndef PROXYGI_LIGHTING_CUBE_GLSL
 #define PROXYGI_LIGHTING_CUBE_GLSL
+
+// The first cube of the set lighting a receiver at p (CPU twin render::lighting_cube_set):
+// receivers above the ground plane see the lit ground below their horizon.
+int lighting_cube_set(vec3 p) { return p.y > kGroundBounceMinHeight ? int(kGroundLitCubes) : 0; }
 
 // The four texels around N in the cube face it hits (first coefficient index of each) and the
 // bilinear fractions: shared by both lookups below.

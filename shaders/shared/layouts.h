@@ -56,6 +56,11 @@ PROXYGI_CONST(uint, kFrameLocalSize, 8u);      // compute passes run 8×8 workgr
 PROXYGI_CONST(uint, kMaxProxies, 1024u);       // per frame, all characters together
 PROXYGI_CONST(uint, kIndirectOrder, 3u);       // indirect light is order 3 (paper §5)
 PROXYGI_CONST(uint, kMaxShCoefficients, 36u);  // order 6
+// The LH cube buffer holds six cubes: r, g, b of the environment, then r, g, b of the ground-lit
+// environment L' (render/frame_tables.h), read by receivers higher than kGroundBounceMinHeight
+// (m) above the ground plane y = 0; the ground itself keeps the environment's cubes.
+PROXYGI_CONST(uint, kGroundLitCubes, 3u);
+PROXYGI_CONST(float, kGroundBounceMinHeight, 0.001f);
 
 // One proxy sphere in world space, streamed every frame through the ring buffer.
 struct ProxySphere {

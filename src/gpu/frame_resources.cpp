@@ -130,7 +130,8 @@ Status SoftGiFrame::build_slots() {
 Status SoftGiFrame::upload_tables(const render::FrameTables& tables) {
   if (tables.settings.sh_order != config_.render.sh_order || tables.settings.shadow_eta != config_.render.shadow_eta ||
       tables.settings.indirect_eta != config_.render.indirect_eta ||
-      tables.settings.sh_window != config_.render.sh_window)
+      tables.settings.sh_window != config_.render.sh_window ||
+      tables.settings.ground_bounce != config_.render.ground_bounce)
     return make_error("frame: tables built for other table settings than the frame's");
   std::vector<glm::vec2> optimal_linear;
   for (int row = 0; row < tables.optimal_linear.rows(); ++row)

@@ -95,7 +95,8 @@ Result<FrameConfig> SceneRenderer::make_config(const settings::RenderSettings& s
 Result<render::FrameTables> SceneRenderer::make_tables(const settings::RenderSettings& settings) const {
   auto environment = world_->environment(settings.sh_order);
   if (!environment) return environment.error();
-  return render::make_frame_tables((*environment)->lighting, settings);
+  const scene::Ground& ground = world_->scene().ground;
+  return render::make_frame_tables((*environment)->lighting, settings, render::GroundInput{ground.enabled, ground.albedo});
 }
 
 Status SceneRenderer::wait_all() {

@@ -171,6 +171,7 @@ std::optional<SurfaceHit> EmbreeScene::intersect(const glm::vec3& origin, const 
     if (!mesh.normals.empty()) shading = w * mesh.normals[tri[0]] + u * mesh.normals[tri[1]] + v * mesh.normals[tri[2]];
     const glm::vec2 uv = mesh.uvs.empty() ? glm::vec2(0.0f) : w * mesh.uvs[tri[0]] + u * mesh.uvs[tri[1]] + v * mesh.uvs[tri[2]];
     hit.albedo = material_albedo(mesh.material, uv);
+    hit.character = mesh.character;
   } else {
     const SphereShape& sphere = spheres_[query.hit.primID];
     geometric = hit.position - sphere.center;

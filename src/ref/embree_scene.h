@@ -52,6 +52,7 @@ struct TriangleMesh {
   std::vector<glm::vec2> uvs;
   std::vector<std::uint32_t> indices;  // 3 per triangle
   SurfaceMaterial material;
+  bool character = false;  // part of a character (its pixels form the "character" region)
 };
 
 // An exact sphere (Embree sphere points): used for analytic tests and for tracing proxy spheres.
@@ -67,6 +68,7 @@ struct SurfaceHit {
   glm::vec3 geometric_normal{0.0f};   // unit, facing the ray origin
   glm::vec3 shading_normal{0.0f};     // unit, interpolated vertex normal on the geometric side
   glm::vec3 albedo{0.0f};
+  bool character = false;             // the mesh hit is a character's
 };
 
 class EmbreeScene {

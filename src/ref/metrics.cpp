@@ -66,6 +66,18 @@ MetricResult pool_mean(Plane map, const ReceiverMask* mask, const std::vector<st
   return result;
 }
 
+double mean_luminance(const image::ImageF& image, const ReceiverMask* mask) {
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+    if (mask != nullptr && !mask->contains(i)) continue;
+    const glm::vec4& p = image.pixels[i];
+    sum += 0.2126 * double(p.r) + 0.7152 * double(p.g) + 0.0722 * double(p.b);
+    ++count;
+  }
+  return count > 0 ? sum / double(count) : 0.0;
+}
+
 Result<MetricResult> rmse(const image::ImageF& test, const image::ImageF& reference, const ReceiverMask* mask) {
   if (Status ok = check_comparable(test, reference, mask); !ok) return ok.error();
   Plane squared(test.width, test.height);

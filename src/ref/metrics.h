@@ -58,6 +58,12 @@ inline constexpr double kRelativeMseEpsilon = 1e-2;
 Result<MetricResult> relative_mse(const image::ImageF& test, const image::ImageF& reference,
                                   const ReceiverMask* mask = nullptr, double epsilon = kRelativeMseEpsilon);
 
+// Mean Rec. 709 luminance 0.2126 R + 0.7152 G + 0.0722 B over the mask's pixels (every pixel
+// without a mask; 0 when the mask is empty). Linear units of the image. The ratio of a test's to
+// its reference's over a region (the character) shows a missing light path that the whole-image
+// errors hide.
+double mean_luminance(const image::ImageF& image, const ReceiverMask* mask = nullptr);
+
 // Mean of map over the mask (pixels where `valid` is non-null and false are skipped too).
 MetricResult pool_mean(Plane map, const ReceiverMask* mask, const std::vector<std::uint8_t>* valid = nullptr);
 

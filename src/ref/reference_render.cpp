@@ -146,6 +146,7 @@ PixelFeatures render_features(const EmbreeScene& scene, const scene::CameraState
   out.albedo = image::ImageF(width, height);
   out.normal = image::ImageF(width, height);
   out.depth = image::ImageF(width, height);
+  out.character = out.mask;
   const glm::vec3 forward = glm::normalize(camera.target - camera.eye);
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
@@ -157,7 +158,23 @@ PixelFeatures render_features(const EmbreeScene& scene, const scene::CameraState
       out.albedo.at(x, y) = glm::vec4(hit->albedo, 1.0f);
       out.normal.at(x, y) = glm::vec4(hit->shading_normal, 1.0f);
       out.depth.at(x, y) = glm::vec4(depth, depth, depth, 1.0f);
+      if (hit->character) out.character.at(x, y) = glm::vec4(1.0f);
     }
+  // The region keeps only pixels whose 8 neighbours' centres hit the character too: a silhouette
+  // pixel's jittered samples also see what lies behind (at 256² the default mannequin's mean
+  // radiance over all its centre-hit pixels is 1.7× higher on a white ground than a black one).
+  image::ImageF interior = out.character;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      if (out.character.at(x, y).r == 0.0f) continue;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int nx = x + dx, ny = y + dy;
+          if (nx < 0 || ny < 0 || nx >= width || ny >= height || out.character.at(nx, ny).r == 0.0f)
+            interior.at(x, y) = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+        }
+    }
+  out.character = std::move(interior);
   return out;
 }
 

@@ -58,6 +58,10 @@ struct PixelFeatures {
   image::ImageF albedo;  // rgb albedo, a = mask
   image::ImageF normal;  // rgb unit world normal facing the camera, a = mask
   image::ImageF depth;   // rgb = eye depth in meters (0 where no hit), a = mask
+  // rgb = 1 where the center rays of the pixel and of its 8 neighbours hit a character mesh (the
+  // "character" region: silhouette pixels, whose samples also see the background, are left out),
+  // else 0; a = 1
+  image::ImageF character;
 };
 
 struct RenderProgress {

@@ -38,6 +38,7 @@ ReferencePaths reference_paths(const std::filesystem::path& output) {
   p.normal = sibling(output, ".normal.exr");
   p.depth = sibling(output, ".depth.exr");
   p.mask = sibling(output, ".mask.exr");
+  p.character = sibling(output, ".character.exr");
   p.record = sibling(output, ".json");
   return p;
 }
@@ -131,9 +132,11 @@ Status write_reference(const ReferencePaths& paths, const ReferenceImages& image
       {&paths.albedo, &features.albedo},
       {&paths.normal, &features.normal},
       {&paths.depth, &features.depth},
-      {&paths.mask, &features.mask}};
+      {&paths.mask, &features.mask},
+      {&paths.character, &features.character}};
   for (const auto& [path, image] : files)
-    if (Status s = image::write_exr(*path, *image); !s) return s;
+    if (image->width > 0)  // features made by hand may leave the character mask out
+      if (Status s = image::write_exr(*path, *image); !s) return s;
   if (filtered)
     if (Status s = image::write_exr(paths.unfiltered, images.radiance); !s) return s;
   // The record goes last: a run interrupted before it leaves the previous record in place.

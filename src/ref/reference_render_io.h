@@ -13,6 +13,9 @@
 //   OUT.depth.exr      eye depth in meters in r, g, b (0 = no hit), a = mask.
 //   OUT.mask.exr       rgb = 1 where the pixel center hits geometry, else 0; a = 1
 //                      (`proxygi compare --mask OUT.mask.exr` reads it).
+//   OUT.character.exr  rgb = 1 where the centers of the pixel and its 8 neighbours hit a
+//                      character, else 0; a = 1 (the "character" region without its silhouette:
+//                      `proxygi compare --mask OUT.character.exr`).
 //   OUT.json           the record below: what was rendered, with how many samples.
 // Every file is written atomically.
 #include <cstdint>
@@ -26,7 +29,7 @@
 namespace proxygi::ref {
 
 struct ReferencePaths {
-  std::filesystem::path radiance, unfiltered, indirect, variance, albedo, normal, depth, mask, record;
+  std::filesystem::path radiance, unfiltered, indirect, variance, albedo, normal, depth, mask, character, record;
 };
 ReferencePaths reference_paths(const std::filesystem::path& output);
 

@@ -102,8 +102,10 @@ Result<std::vector<TriangleMesh>> world_meshes(const world::World& world, const 
     const world::CharacterInstance& instance = world.instances()[i];
     auto primitives = world.pose_instance(state, i);
     if (!primitives) return primitives.error();
+    const std::size_t first = meshes.size();
     append_meshes(instance.model->character, geometry.models[instance.model_index], std::move(*primitives),
                   std::nullopt, meshes);
+    for (std::size_t m = first; m < meshes.size(); ++m) meshes[m].character = true;
   }
   for (std::size_t i = 0; i < world.static_models().size(); ++i) {
     const world::StaticModel& model = world.static_models()[i];

@@ -29,12 +29,13 @@ glm::vec3 interpolate_triangle(const glm::vec3& x, const glm::vec3& a, const glm
   return u * value_a + v * value_b + (1.0f - u - v) * value_c;
 }
 
-glm::vec3 unshadowed_irradiance(const FrameTables& tables, const glm::vec3& normal) {
+glm::vec3 unshadowed_irradiance(const FrameTables& tables, const glm::vec3& p, const glm::vec3& normal) {
   const int order = tables.settings.sh_order;
   std::vector<float> lh(std::size_t(order * order));
   glm::vec3 irradiance(0.0f);
+  const int set = lighting_cube_set(p);
   for (int channel = 0; channel < 3; ++channel) {
-    lookup_lighting_cube(tables.lighting_cube[std::size_t(channel)], normal, lh);
+    lookup_lighting_cube(tables.lighting_cube[std::size_t(set + channel)], normal, lh);
     irradiance[channel] = kSqrtFourPi * lh[0];
   }
   return irradiance;
@@ -55,7 +56,7 @@ AmbientOcclusionResult ambient_occlusion(const FrameTables& tables, const glm::v
                           seen->sine * std::max(glm::dot(normal, seen->direction), 0.0f);
     result.unoccluded *= 1.0f - std::clamp(covered, 0.0f, 1.0f);
   }
-  result.irradiance = glm::max(result.unoccluded * unshadowed_irradiance(tables, normal), glm::vec3(0.0f));
+  result.irradiance = glm::max(result.unoccluded * unshadowed_irradiance(tables, p, normal), glm::vec3(0.0f));
   return result;
 }
 

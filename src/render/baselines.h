@@ -38,8 +38,8 @@ VertexReceiver vertex_receiver(const glm::vec3& position, const glm::vec3& norma
 glm::vec3 interpolate_triangle(const glm::vec3& x, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
                                const glm::vec3& value_a, const glm::vec3& value_b, const glm::vec3& value_c);
 
-// E(N) = √4π (LH(N))_0 per channel.
-glm::vec3 unshadowed_irradiance(const FrameTables& tables, const glm::vec3& normal);
+// E(N) = √4π (LH(N))_0 per channel, from the cube set of receiver point p (lighting_cube_set).
+glm::vec3 unshadowed_irradiance(const FrameTables& tables, const glm::vec3& p, const glm::vec3& normal);
 
 struct AmbientOcclusionResult {
   float unoccluded = 1.0f;     // A ∈ [0, 1]

@@ -1,12 +1,21 @@
 #include "render/frame_tables.h"
 
+#include <algorithm>
+
 #include "base/check.h"
+#include "shaders/shared/layouts.h"
+#include "sh/basis.h"
 #include "sh/convolution.h"
+#include "sh/ground_bounce.h"
 
 namespace proxygi::render {
 
+int lighting_cube_set(const glm::vec3& p) {
+  return p.y > gpu_layout::kGroundBounceMinHeight ? int(gpu_layout::kGroundLitCubes) : 0;
+}
+
 FrameTables make_frame_tables(const sh::RgbSh& lighting, const settings::RenderSettings& settings,
-                              const TableResolution& resolution) {
+                              const GroundInput& ground, const TableResolution& resolution) {
   const int order = settings.sh_order;
   PROXYGI_CHECK(order >= settings::kMinShOrder && order <= settings::kMaxShOrder, "frame SH order out of range");
   PROXYGI_CHECK(lighting.order >= order, "lighting projected at a lower order than the frame");
@@ -30,9 +39,23 @@ FrameTables make_frame_tables(const sh::RgbSh& lighting, const settings::RenderS
   sh::apply_influence_fade(tables.exact_indirect, settings.indirect_eta);
   tables.optimal_linear = sh::make_optimal_linear_table(order, resolution.optimal_linear_rows);
 
-  for (int channel = 0; channel < 3; ++channel)
-    tables.lighting_cube[std::size_t(channel)] = sh::make_lighting_cube_map(
-        order, tables.lighting.channels[std::size_t(channel)], resolution.cube_face_size);
+  tables.ground_lit = tables.lighting;
+  const bool bounce = settings.ground_bounce && ground.enabled;
+  for (int channel = 0; channel < 3; ++channel) {
+    const auto& sky = tables.lighting.channels[std::size_t(channel)];
+    tables.lighting_cube[std::size_t(channel)] = sh::make_lighting_cube_map(order, sky, resolution.cube_face_size);
+    const std::size_t lit = gpu_layout::kGroundLitCubes + std::size_t(channel);
+    if (!bounce) {
+      tables.lighting_cube[lit] = tables.lighting_cube[std::size_t(channel)];
+      continue;
+    }
+    // The ground shows the windowed lighting's unshadowed irradiance (what the frame draws on it).
+    const double radiance = std::max(0.0, sh::ground_irradiance(order, sky)) * ground.albedo[channel] / sh::kPi;
+    tables.ground_radiance[channel] = float(radiance);
+    tables.ground_lit.channels[std::size_t(channel)] = sh::replace_below_horizon(order, sky, radiance);
+    tables.lighting_cube[lit] =
+        sh::make_lighting_cube_map(order, tables.ground_lit.channels[std::size_t(channel)], resolution.cube_face_size);
+  }
 
   const std::vector<double> cosine = sh::clamped_cosine_zonal(3);
   for (int channel = 0; channel < 3; ++channel) {

@@ -4,7 +4,10 @@
 // tables with the sphere-of-influence fade, the OL (a, b) table, the LH(N) cube maps (one per
 // colour channel), the order-3 irradiance vector L̃ = L * clamped cosine for indirect light and the
 // exact indirect operator M(s) (order 3, faded like the visibility table).
-// Lighting is the environment's SH projection with the ringing window applied.
+// Lighting is the environment's SH projection with the ringing window applied. With the ground
+// bounce (render.ground_bounce and a ground), receivers above the ground plane read a second set
+// of LH cubes built from the ground-lit lighting L' (sh/ground_bounce.h): L above the horizon,
+// the lit ground's radiance g = ρ E_g / π below it.
 #include <array>
 #include <vector>
 
@@ -25,6 +28,13 @@ struct TableResolution {
   int cube_face_size = 16;        // LH cube map texels per face edge
 };
 
+// The ground as the frame sees it: the plane y = 0 reaching the horizon, with this albedo
+// (scene::Ground), or no ground at all.
+struct GroundInput {
+  bool enabled = false;
+  glm::vec3 albedo{0.0f};  // linear rgb
+};
+
 struct FrameTables {
   settings::RenderSettings settings;             // what the tables were built for (sh_order, η, sh_window)
   TableResolution resolution;
@@ -33,13 +43,22 @@ struct FrameTables {
   sh::ZonalTable proxy_visibility;             // order 3, faded at 1/η_indirect
   sh::OptimalLinearTable optimal_linear;       // order settings.sh_order
   sh::ExactIndirectTable exact_indirect;       // M(s), order 3, faded at 1/η_indirect
-  std::array<sh::LightingCubeMap, 3> lighting_cube;  // LH(N) per channel r, g, b
+  // LH(N) per channel: r, g, b of `lighting` (receivers on the ground), then r, g, b of
+  // `ground_lit` (receivers above it, gpu_layout::kGroundLitCubes on): one buffer on the GPU.
+  std::array<sh::LightingCubeMap, 6> lighting_cube;
+  sh::RgbSh ground_lit;                  // L' (a copy of `lighting` when the bounce is off)
+  glm::vec3 ground_radiance{0.0f};       // g = ρ E_g / π per channel (0 when the bounce is off)
   std::array<std::array<float, 9>, 3> irradiance_order3;  // L̃ per channel, order 3
 };
 
 // `lighting` is the unwindowed SH projection of the environment (order ≥ settings.sh_order). Reads
-// the table settings of `settings` (sh_order, shadow_eta, indirect_eta, sh_window).
+// the table settings of `settings` (sh_order, shadow_eta, indirect_eta, sh_window, ground_bounce).
+// `ground`: the scene's ground (no ground: the ground-lit cubes equal the others).
 FrameTables make_frame_tables(const sh::RgbSh& lighting, const settings::RenderSettings& settings,
-                              const TableResolution& resolution = {});
+                              const GroundInput& ground = {}, const TableResolution& resolution = {});
+
+// The first LH cube of the set that lights a receiver at world point p: 0 on (or below) the
+// ground plane, gpu_layout::kGroundLitCubes above it (exponentiate.comp's rule).
+int lighting_cube_set(const glm::vec3& p);
 
 }  // namespace proxygi::render

@@ -95,7 +95,7 @@ void lookup_lighting_cube(const sh::LightingCubeMap& cube, const glm::vec3& n, s
 }
 
 DirectResult exponentiate_and_shade(const FrameTables& tables, std::span<const float> log_occlusion, float tau,
-                                    const glm::vec3& normal) {
+                                    const glm::vec3& p, const glm::vec3& normal) {
   const int order = tables.settings.sh_order;
   const std::size_t count = std::size_t(order * order);
   std::vector<float> visibility(count);
@@ -103,8 +103,9 @@ DirectResult exponentiate_and_shade(const FrameTables& tables, std::span<const f
   result.squarings = sh::exp_hybrid(order, log_occlusion, tables.optimal_linear, tau, visibility);
   result.occlusion_dc = visibility[0];
   std::vector<float> lh(count);
+  const int set = lighting_cube_set(p);
   for (int channel = 0; channel < 3; ++channel) {
-    lookup_lighting_cube(tables.lighting_cube[std::size_t(channel)], normal, lh);
+    lookup_lighting_cube(tables.lighting_cube[std::size_t(set + channel)], normal, lh);
     float irradiance = 0.0f;
     for (std::size_t i = 0; i < count; ++i) irradiance += visibility[i] * lh[i];
     result.irradiance[channel] = std::max(irradiance, 0.0f);

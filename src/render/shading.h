@@ -34,8 +34,9 @@ struct DirectResult {
   float occlusion_dc = 0.0f;    // (O_p)_0, the DC of the environment visibility
   int squarings = 0;            // HYB squarings used
 };
+// LH(N) from the cube set of receiver point p (lighting_cube_set: ground-lit above the ground).
 DirectResult exponentiate_and_shade(const FrameTables& tables, std::span<const float> log_occlusion, float tau,
-                                    const glm::vec3& normal);
+                                    const glm::vec3& p, const glm::vec3& normal);
 
 // LH(N) of one channel from the cube map, bilinear within the face that N hits (clamped at the
 // face edges). out holds n² values.

@@ -111,6 +111,7 @@ const std::vector<Field>& table() {
       choice<&S::splat>("splat", "log-occlusion accumulation: tiled compute gather or raster splat", kNeedPipelines,
                         kSplatChoices),
       boolean<&S::indirect>("indirect", "bounce light from the proxies", kNeedConstants),
+      boolean<&S::ground_bounce>("ground_bounce", "light bounced off the lit ground onto receivers above it", kNeedTables),
       choice<&S::tonemap>("tonemap", "display curve", kNeedConstants, kTonemapChoices),
       real<&S::exposure_ev>("exposure_ev", "exposure in stops before the tonemap", kNeedConstants, -kInfinity, -8.0, 8.0),
   };
@@ -121,10 +122,11 @@ const std::vector<Field>& table() {
 // new member stops the build here until its row is added and it is named below too.
 [[maybe_unused]] void every_member_has_a_row(const RenderSettings& settings) {
   const auto& [method, sh_order, receiver_scale, shadow_eta, indirect_eta, sh_window, indirect_operator, exponential,
-               hyb_tau, upsampling, bilateral_depth_epsilon, splat, indirect, tonemap, exposure_ev] = settings;
+               hyb_tau, upsampling, bilateral_depth_epsilon, splat, indirect, ground_bounce, tonemap,
+               exposure_ev] = settings;
   (void)method, (void)sh_order, (void)receiver_scale, (void)shadow_eta, (void)indirect_eta, (void)sh_window;
   (void)indirect_operator, (void)exponential, (void)hyb_tau, (void)upsampling, (void)bilateral_depth_epsilon;
-  (void)splat, (void)indirect, (void)tonemap, (void)exposure_ev;
+  (void)splat, (void)indirect, (void)ground_bounce, (void)tonemap, (void)exposure_ev;
 }
 
 std::string show(double value) {

@@ -53,6 +53,9 @@ struct RenderSettings {
   float bilateral_depth_epsilon = 0.05f;  // ε of eq. 11, meters of eye depth, > 0
   SplatMethod splat = SplatMethod::compute;  // the gather measured faster on lavapipe (README)
   bool indirect = true;
+  // Receivers above the ground plane see the lit ground (albedo × its unshadowed irradiance / π)
+  // below their horizon instead of the environment's below-horizon radiance (sh/ground_bounce.h).
+  bool ground_bounce = true;
   Tonemap tonemap = Tonemap::aces;
   float exposure_ev = 0.0f;     // radiance × 2^exposure_ev before the tonemap
   bool operator==(const RenderSettings&) const = default;

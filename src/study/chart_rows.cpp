@@ -22,6 +22,7 @@ std::string row_label(const ChartRow& row) {
   if (row.receiver_scale > 0) text << " k" << row.receiver_scale;
   if (!row.upsampling.empty()) text << ' ' << row.upsampling;
   if (!row.indirect.empty()) text << ' ' << row.indirect;
+  if (!row.ground_bounce) text << " no-ground-bounce";
   return text.str();
 }
 
@@ -61,7 +62,10 @@ std::vector<ChartRow> mean_over_scenes(const std::vector<ChartRow>& rows) {
     ChartRow mean = *group.front();
     mean.scene = kAllScenes;
     mean.milliseconds = mean.relative_mse = mean.rmse = mean.ssim = mean.flip = 0.0;
+    mean.character_relative_mse = mean.character_luminance_ratio = 0.0;
     for (const ChartRow* row : group) {
+      mean.character_relative_mse += row->character_relative_mse;
+      mean.character_luminance_ratio += row->character_luminance_ratio;
       mean.milliseconds += row->milliseconds;
       mean.relative_mse += row->relative_mse;
       mean.rmse += row->rmse;
@@ -74,6 +78,8 @@ std::vector<ChartRow> mean_over_scenes(const std::vector<ChartRow>& rows) {
     mean.rmse /= count;
     mean.ssim /= count;
     mean.flip /= count;
+    mean.character_relative_mse /= count;
+    mean.character_luminance_ratio /= count;
     mean.pareto = false;
     means.push_back(mean);
   }
@@ -153,12 +159,13 @@ GoalResult vertex_goal(const std::vector<ChartRow>& rows, const std::string& sce
 std::string to_csv(const std::vector<ChartRow>& rows) {
   std::ostringstream csv;
   csv << "scene,method,label,sh_order,receiver_scale,upsampling,indirect,samples,ms_per_frame,relative_mse,rmse,ssim,"
-         "flip,pareto,default\n";
+         "flip,character_relative_mse,character_luminance_ratio,pareto,default\n";
   csv.precision(6);
   for (const ChartRow& row : rows)
     csv << row.scene << ',' << row.method << ',' << row_label(row) << ',' << row.sh_order << ',' << row.receiver_scale
         << ',' << row.upsampling << ',' << row.indirect << ',' << row.samples << ',' << row.milliseconds << ','
-        << row.relative_mse << ',' << row.rmse << ',' << row.ssim << ',' << row.flip << ',' << int(row.pareto) << ','
+        << row.relative_mse << ',' << row.rmse << ',' << row.ssim << ',' << row.flip << ',' << row.character_relative_mse
+        << ',' << row.character_luminance_ratio << ',' << int(row.pareto) << ','
         << int(row.is_default) << '\n';
   return csv.str();
 }
@@ -172,14 +179,15 @@ std::string to_markdown(const std::vector<ChartRow>& rows, const std::string& sc
     return a->milliseconds < b->milliseconds;
   });
   std::ostringstream text;
-  text << "| method | ms/frame | relative MSE | RMSE | SSIM | HDR-FLIP | Pareto |\n";
-  text << "|---|---:|---:|---:|---:|---:|:---:|\n";
+  text << "| method | ms/frame | relative MSE | RMSE | SSIM | HDR-FLIP | character relMSE | character brightness | Pareto |\n";
+  text << "|---|---:|---:|---:|---:|---:|---:|---:|:---:|\n";
   char line[320];
   for (const ChartRow* row : selected) {
     std::string label = row_label(*row);
     if (row->is_default) label += " (default)";
-    std::snprintf(line, sizeof line, "| %s | %.2f | %.4g | %.4g | %.4f | %.4f | %s |\n", label.c_str(), row->milliseconds,
-                  row->relative_mse, row->rmse, row->ssim, row->flip, row->pareto ? "yes" : "");
+    std::snprintf(line, sizeof line, "| %s | %.2f | %.4g | %.4g | %.4f | %.4f | %.4g | %.3f | %s |\n", label.c_str(),
+                  row->milliseconds, row->relative_mse, row->rmse, row->ssim, row->flip, row->character_relative_mse,
+                  row->character_luminance_ratio, row->pareto ? "yes" : "");
     text << line;
   }
   return text.str();
@@ -201,6 +209,9 @@ std::string to_json(const std::vector<ChartRow>& rows) {
                    {"rmse", row.rmse},
                    {"ssim", row.ssim},
                    {"flip", row.flip},
+                   {"character_relative_mse", row.character_relative_mse},
+                   {"character_luminance_ratio", row.character_luminance_ratio},
+                   {"ground_bounce", row.ground_bounce},
                    {"pareto", row.pareto},
                    {"default", row.is_default}});
   return out.dump(2);

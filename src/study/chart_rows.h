@@ -27,11 +27,16 @@ struct ChartRow {
   double rmse = 0.0;
   double ssim = 0.0;
   double flip = 0.0;      // HDR-FLIP mean
+  // The "character" region (pixels whose center ray hits a character in the reference): relative
+  // MSE there, and the mean luminance of the row's image over the reference's (1 = as bright).
+  double character_relative_mse = 0.0;
+  double character_luminance_ratio = 0.0;
+  bool ground_bounce = true;  // proxy/ao/vertex: render.ground_bounce (label "no-ground-bounce" when off)
   bool pareto = false;    // on its scene's Pareto front (set by mark_pareto_fronts)
   bool is_default = false;  // the proxy method at the product's default setting (method "proxy" only)
 };
 
-// "proxy n4 k4 bilateral averaged", "path+guided 64 spp", ...
+// "proxy n4 k4 bilateral averaged", "proxy n4 k4 bilateral averaged no-ground-bounce", "path+guided 64 spp", ...
 std::string row_label(const ChartRow& row);
 
 // Marks, within each scene separately, the rows no other row beats in both milliseconds and

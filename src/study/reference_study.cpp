@@ -155,6 +155,7 @@ Result<FrameReference> load_or_render_reference(const ChartScene& chart, int fra
   }
   reference.radiance = images.radiance;
   reference.receivers = ref::mask_from_image(reference.features.mask);
+  reference.character = ref::mask_from_image(reference.features.character);
   reference.samples = record.samples;
   reference.trace_seconds = record.seconds;
   return reference;
@@ -174,6 +175,14 @@ Result<ImageScores> score_image(const image::ImageF& test, const FrameReference&
   auto flip = ref::flip_hdr(test, reference.radiance, &reference.receivers);
   if (!flip) return flip.error();
   scores.flip = flip->flip.mean;
+  if (reference.character.count() > 0) {
+    auto character = ref::relative_mse(test, reference.radiance, &reference.character);
+    if (!character) return character.error();
+    scores.character_relative_mse = character->mean;
+    const double reference_luminance = ref::mean_luminance(reference.radiance, &reference.character);
+    if (reference_luminance > 0.0)
+      scores.character_luminance_ratio = ref::mean_luminance(test, &reference.character) / reference_luminance;
+  }
   return scores;
 }
 
@@ -182,6 +191,8 @@ void add_scores(ChartRow& row, const ImageScores& scores, double weight) {
   row.rmse += weight * scores.rmse;
   row.ssim += weight * scores.ssim;
   row.flip += weight * scores.flip;
+  row.character_relative_mse += weight * scores.character_relative_mse;
+  row.character_luminance_ratio += weight * scores.character_luminance_ratio;
 }
 
 Result<std::vector<PathTracingScore>> score_path_tracing(const FrameTracer& tracer, const FrameReference& reference,

@@ -46,6 +46,7 @@ struct FrameReference {
   image::ImageF radiance;      // linear, mean of all samples
   ref::PixelFeatures features; // pixel-center features (guide of the filter)
   ref::ReceiverMask receivers; // pixels the center ray hits
+  ref::ReceiverMask character; // pixels the center ray hits a character in (the "character" region)
   std::uint32_t samples = 0;
   double trace_seconds = 0.0;  // all runs together
 };
@@ -55,6 +56,10 @@ struct ImageScores {
   double rmse = 0.0;
   double ssim = 0.0;
   double flip = 0.0;  // HDR-FLIP
+  // Over the character region (0 when the frame shows no character): relative MSE, and the mean
+  // luminance of the test over the reference's.
+  double character_relative_mse = 0.0;
+  double character_luminance_ratio = 0.0;
 };
 
 // What every frame of one chart scene shares: the scene as the chart gives it, its world (models

@@ -87,7 +87,7 @@ TEST_F(BaselineTest, AmbientOcclusionMatchesCpuTwinAndNeverBrightens) {
       EXPECT_LE(relative_error(gpu, cpu.irradiance), 1e-3f) << "AO irradiance at " << x << "," << y;
       EXPECT_NEAR(direct->at(x, y).w, cpu.unoccluded, 1e-3f * cpu.unoccluded) << "A at " << x << "," << y;
       EXPECT_EQ(glm::vec3(indirect->at(x, y)), glm::vec3(0.0f)) << "AO has no bounce light";
-      const glm::vec3 open = render::unshadowed_irradiance(rendered.tables, n);
+      const glm::vec3 open = render::unshadowed_irradiance(rendered.tables, glm::vec3(p), n);
       for (int c = 0; c < 3; ++c) EXPECT_LE(gpu[c], open[c] * (1.0f + 1e-5f)) << "brighter than unshadowed";
       ++checked;
       if (cpu.unoccluded < 0.98f) ++occluded;
@@ -174,7 +174,7 @@ TEST_F(BaselineTest, VertexReceiversShadingAndInterpolationMatchCpuTwins) {
       norm += cpu_log[c] * cpu_log[c];
     }
     EXPECT_LE(std::sqrt(difference), 1e-3f * std::sqrt(norm) + 1e-6f) << "log occlusion at vertex " << i;
-    const auto cpu_direct = render::exponentiate_and_shade(rendered.tables, cpu_log, 0.25f, n);
+    const auto cpu_direct = render::exponentiate_and_shade(rendered.tables, cpu_log, 0.25f, p, n);
     EXPECT_LE(relative_error(glm::vec3(direct->pixels[i]), cpu_direct.irradiance), 1e-3f) << "direct at vertex " << i;
     const auto cpu_indirect = render::accumulate_indirect(rendered.tables, p, n, kTwoSpheres, direct->pixels[i].w);
     EXPECT_LE(relative_error(glm::vec3(indirect->pixels[i]), cpu_indirect.irradiance), 1e-3f)

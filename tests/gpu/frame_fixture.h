@@ -60,7 +60,8 @@ inline GroundMesh ground_plane(float size, int cells) {
 // One frame of the fixture scene, rendered and finished: `ground` (any mesh with positions,
 // normals, indices; albedo 0.8) under `lighting` at SH order `order`, the camera at `eye` looking
 // at the origin, `config` as given (one frame in flight; the vertex method gets receivers for
-// every ground vertex). Failures are reported through gtest; `frame` is null after one.
+// every ground vertex). `ground_input`: the ground the tables light receivers above it with (none
+// by default). Failures are reported through gtest; `frame` is null after one.
 struct RenderedFrame {
   std::unique_ptr<SoftGiFrame> frame;
   render::FrameTables tables;
@@ -68,10 +69,11 @@ struct RenderedFrame {
 template <class Ground>
 RenderedFrame render_fixture_frame(Context& context, FrameConfig config, const sh::RgbSh& lighting, int order,
                                    const Ground& ground, const std::vector<render::Sphere>& spheres,
-                                   const glm::vec3& eye = {0.0f, 4.0f, 3.0f}) {
+                                   const glm::vec3& eye = {0.0f, 4.0f, 3.0f},
+                                   const render::GroundInput& ground_input = {}) {
   RenderedFrame out;
   config.render.sh_order = order;
-  out.tables = render::make_frame_tables(lighting, config.render);
+  out.tables = render::make_frame_tables(lighting, config.render, ground_input);
   auto mesh = upload_static_mesh(context, ground.positions, ground.normals, ground.indices, glm::vec4(0.8f, 0.8f, 0.8f, 1));
   EXPECT_TRUE(mesh.ok());
   if (!mesh.ok()) return out;

@@ -59,7 +59,7 @@ TEST_F(FrameTest, PassesMatchCpuTwinsAtSampleReceivers) {
       }
       EXPECT_LE(std::sqrt(difference), 1e-3f * std::sqrt(norm) + 1e-6f) << "log occlusion at receiver " << x << "," << y;
 
-      const auto cpu_direct = render::exponentiate_and_shade(rendered.tables, cpu_log, 0.25f, n);
+      const auto cpu_direct = render::exponentiate_and_shade(rendered.tables, cpu_log, 0.25f, glm::vec3(p), n);
       EXPECT_LE(relative_error(glm::vec3(direct->at(x, y)), cpu_direct.irradiance), 1e-3f) << "direct at " << x << "," << y;
       EXPECT_NEAR(direct->at(x, y).w, cpu_direct.occlusion_dc, 1e-3f * std::abs(cpu_direct.occlusion_dc));
 
