@@ -42,6 +42,7 @@ void add_bench_command(CLI::App& app, CommandRunner& runner) {
   micro->add_option("--filter", options->filter, "Regular expression over benchmark names, e.g. '^anim/'");
   micro->add_flag("--json", options->json, "Google Benchmark JSON on stdout");
   micro->add_option("--min-time", options->min_time, "Minimum seconds per benchmark");
+  add_quiet_flag(*micro);
   micro->callback([&runner, options] {
     runner = [options] { return run_micro_benchmarks(options->filter, options->json, options->min_time); };
   });
