@@ -1,5 +1,6 @@
-# --quiet on every command: a successful run prints nothing at all, on stdout or stderr (no
-# progress, no summary, no info lines). Renders tiny frames on the Vulkan device (label gpu).
+# --quiet on every command: a successful run prints nothing on stdout or stderr (no progress, no
+# summary, no info lines) but warnings ("warning: ..." lines: fitting the mannequin warns that its
+# surface is open). Renders tiny frames on the Vulkan device (label gpu).
 #   -DPROXYGI=<binary> -DWORK=<scratch folder>
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
@@ -22,7 +23,9 @@ set(failures "")
 foreach(entry ${commands})
   string(REPLACE "~" ";" args "${entry}")
   execute_process(COMMAND ${PROXYGI} ${args} --quiet RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT code EQUAL 0 OR NOT out STREQUAL "" OR NOT err STREQUAL "")
+  string(REGEX REPLACE "(^|\n)warning: [^\n]*" "" rest "${err}")
+  string(STRIP "${rest}" rest)
+  if(NOT code EQUAL 0 OR NOT out STREQUAL "" OR NOT rest STREQUAL "")
     set(failures "${failures}\n  proxygi ${args} --quiet: exit ${code}, stdout '${out}', stderr '${err}'")
   endif()
 endforeach()
