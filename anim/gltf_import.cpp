@@ -72,14 +72,18 @@ Result<Character> convert(ImportContext& ctx) {
   return character;
 }
 
-Result<Character> import_unprefixed(std::span<const std::uint8_t> bytes, const std::filesystem::path& base_dir,
-                                    const ImportLimits& limits) {
+}  // namespace
+
+namespace detail {
+
+Status load_model(std::span<const std::uint8_t> bytes, const std::filesystem::path& base_dir, const ImportLimits& limits,
+                  tinygltf::Model& model, std::filesystem::path& root, std::string& warning) {
   if (bytes.size() > limits.max_file_bytes || bytes.size() > UINT_MAX) {
-    return make_error("file of " + std::to_string(bytes.size()) + " bytes exceeds the limit of " +
-                      std::to_string(limits.max_file_bytes));
+    return make_error("file of " + settings::readable_bytes(bytes.size()) + " exceeds the limit of " +
+                      settings::readable_bytes(limits.max_file_bytes));
   }
   const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
-  std::filesystem::path root;
+  root.clear();
   if (!base_dir.empty()) {
     std::error_code error;
     root = std::filesystem::weakly_canonical(std::filesystem::absolute(base_dir, error), error);
@@ -94,9 +98,7 @@ Result<Character> import_unprefixed(std::span<const std::uint8_t> bytes, const s
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&keep_encoded_image, nullptr);
   loader.SetFsCallbacks(detail::sandbox_callbacks(&sandbox));
-  tinygltf::Model model;
   std::string error;
-  std::string warning;
   // Never an empty base dir: tinygltf would then resolve URIs against the process's CWD.
   const std::string tinygltf_base = root.empty() ? std::string("/nonexistent-proxygi-sandbox") : root.string();
   bool loaded = false;
@@ -112,6 +114,19 @@ Result<Character> import_unprefixed(std::span<const std::uint8_t> bytes, const s
   // tinygltf 2.7 writes an error for a skin without inverseBindMatrices yet succeeds: only the
   // return value decides.
   if (!loaded) return make_error(one_line(error));
+  return {};
+}
+
+}  // namespace detail
+
+namespace {
+
+Result<Character> import_unprefixed(std::span<const std::uint8_t> bytes, const std::filesystem::path& base_dir,
+                                    const ImportLimits& limits) {
+  tinygltf::Model model;
+  std::filesystem::path root;
+  std::string warning;
+  PROXYGI_IMPORT_TRY(detail::load_model(bytes, base_dir, limits, model, root, warning));
   if (!warning.empty()) log_debug("tinygltf: " + one_line(warning));
   ImportContext ctx{model, limits, root};
   return convert(ctx);

@@ -32,12 +32,13 @@
 
 #include "anim/character.h"
 #include "base/result.h"
+#include "settings/limits.h"
 
 namespace proxygi::anim {
 
 // Caps that keep hostile or broken files from exhausting memory or time.
 struct ImportLimits {
-  std::uint64_t max_file_bytes = 1ull << 30;           // the model file and each external file
+  std::uint64_t max_file_bytes = settings::kMaxModelFileBytes;  // the model file and each external file
   std::uint64_t max_accessor_elements = 1ull << 24;    // elements in one accessor
   std::uint64_t max_total_elements = 1ull << 27;       // elements decoded over the whole import
   std::uint32_t max_objects = 1u << 16;                // nodes, meshes, primitives, skins, ... each

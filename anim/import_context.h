@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <span>
 #include <string>
 
 #include "anim/character.h"
@@ -38,6 +39,12 @@ struct ImportContext {
 inline Error error_at(const std::string& what, const std::string& message) {
   return make_error(what + ": " + message);
 }
+
+// tinygltf parses `bytes` (GLB or JSON) into `model` with sandboxed file access (external files
+// only inside base_dir, which becomes `root`, canonical) and images kept encoded; `warning` gets
+// tinygltf's warnings (lines). Fails with tinygltf's error as one line (gltf_import.cpp).
+Status load_model(std::span<const std::uint8_t> bytes, const std::filesystem::path& base_dir, const ImportLimits& limits,
+                  tinygltf::Model& model, std::filesystem::path& root, std::string& warning);
 
 // Each step fills its part of `character` from ctx.model; steps run in the order listed in
 // gltf_import.cpp and may rely on the checks of earlier steps.

@@ -10,6 +10,8 @@
 // --json), and reports the goals. References are cached under --cache and reused (or continued)
 // by later runs. --shard measures one shard of the chart's units into DIR/bench-chart-shard.json;
 // --merge joins shards into the chart a single run writes (bench_chart_shards.h).
+#include <unistd.h>
+
 #include <cstdio>
 
 #include <nlohmann/json.hpp>
@@ -18,6 +20,7 @@
 #include "apps/bench_chart_shards.h"
 #include "apps/chart_methods.h"
 #include "apps/commands.h"
+#include "settings/limits.h"
 #include "base/atomic_file.h"
 #include "base/log.h"
 
@@ -132,7 +135,8 @@ int run_bench_chart(const ChartArgs& args) {
   reference_options.cache_dir = args.cache;
   reference_options.assets_dir = assets_dir();
   reference_options.guided_radius = std::max(2, args.size / 24);
-  reference_options.progress = !args.json;
+  const bool terminal = isatty(fileno(stderr)) != 0;
+  reference_options.progress = !args.json && !quiet() && terminal;  // the tracer's progress is one \r line
   const std::vector<int> sample_counts = args.quick ? std::vector<int>{1, 4} : std::vector<int>{1, 4, 16, 64};
 
   std::unique_ptr<gpu::Context> context;
@@ -175,13 +179,14 @@ int run_bench_chart(const ChartArgs& args) {
     add_path_tracing_rows(chart.name, first_unit, path_tracing_scores, rows);
     const Status measured = run_raster_methods(
         *context, chart, grid_part, references, {args.timing_frames}, [&](std::size_t i, const study::ChartRow& row) {
-          if (!args.json)
-            std::fprintf(stderr, "\r  %s: %zu/%zu %-40s %8.2f ms  relMSE %.4g   ", chart.name.c_str(), i + 1,
-                         grid_part.size(), study::row_label(row).c_str(), row.milliseconds, row.relative_mse);
+          // One line rewritten with \r on a terminal, a line per row into a file or pipe.
+          if (!args.json && !quiet())
+            std::fprintf(stderr, "%s  %s: %zu/%zu %-40s %8.2f ms  relMSE %.4g%s", terminal ? "\r" : "", chart.name.c_str(), i + 1,
+                         grid_part.size(), study::row_label(row).c_str(), row.milliseconds, row.relative_mse, terminal ? "   " : "\n");
           rows.push_back({setting_units[i], row});
         });
     if (!measured) return fail_runtime("bench chart: " + chart.name + ", " + measured.message());
-    if (!args.json && !grid_part.empty()) std::fprintf(stderr, "\n");
+    if (!args.json && !quiet() && terminal && !grid_part.empty()) std::fprintf(stderr, "\n");
   }
   if (args.references_only) {
     std::printf("bench chart: references ready under %s\n", args.cache.c_str());
@@ -227,13 +232,13 @@ void add_bench_chart_command(CLI::App& bench, CommandRunner& runner) {
   command->add_flag("--json", args->json, "Print the rows and goals as JSON on stdout");
   command->add_option("--out", args->out, "Folder for bench-chart.csv, .md and .png")->capture_default_str();
   command->add_option("--cache", args->cache, "Folder of cached references and proxy rigs")->capture_default_str();
-  command->add_option("--size", args->size, "Square image size in pixels")->check(CLI::Range(16, 2048))->capture_default_str();
+  command->add_option("--size", args->size, "Square image size in pixels")->check(CLI::Range(settings::kMinImageSize, settings::kMaxImageSize))->capture_default_str();
   command->add_option("--frames", args->frames, "Frames of motion per scene")->check(CLI::Range(1, 16))->capture_default_str();
   command->add_option("--timing-frames", args->timing_frames, "Pipelined frames timed per setting")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
   command->add_option("--reference-spp", args->reference_spp, "Samples per pixel of the references")
-      ->check(CLI::Range(1, 1 << 20))
+      ->check(CLI::Range(1, settings::kMaxSamplesPerPixel))
       ->capture_default_str();
   command->add_option("--scenes", args->scenes, "Only these scenes (default, CesiumMan, Fox, RiggedSimple)")
       ->delimiter(',')
@@ -253,6 +258,7 @@ void add_bench_chart_command(CLI::App& bench, CommandRunner& runner) {
                       "With --merge: take each row's ms per frame from this bench-chart-timings.json (to compare a "
                       "merge with a single run byte for byte)");
   add_device_option(*command, args->device);
+  add_quiet_flag(*command);
   command->callback([&runner, args] { runner = [args] { return run_bench_chart(*args); }; });
 }
 

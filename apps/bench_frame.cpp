@@ -16,6 +16,7 @@
 
 #include "apps/bench_splat_stages.h"
 #include "apps/commands.h"
+#include "settings/limits.h"
 #include "gpu/scene_renderer.h"
 #include "run/frame_loop.h"
 #include "world/world.h"
@@ -229,13 +230,14 @@ void add_bench_frame_command(CLI::App& bench, CommandRunner& runner) {
   auto* command = bench.add_subcommand("frame", "Per-pass and per-frame time of the soft-GI frame (default and crowd scenes)");
   command->add_flag("--json", options->json, "Machine-readable output");
   command->add_option("--frames", options->frames, "Frames timed per setting")->check(CLI::Range(1, 1000));
-  command->add_option("--size", options->size, "Square output size in pixels")->check(CLI::Range(16, 4096));
+  command->add_option("--size", options->size, "Square output size in pixels")->check(CLI::Range(settings::kMinImageSize, settings::kMaxImageSize));
   command->add_option("--indirect-operator", options->indirect_operator, "Indirect operator of every setting")
       ->check(CLI::IsMember({"point", "averaged", "exact"}));
   command->add_option("--only", options->only, "Rows to run (default: all): default, baselines, crowd")
       ->delimiter(',')
       ->check(CLI::IsMember({"default", "baselines", "crowd"}));
   add_device_option(*command, options->device);
+  add_quiet_flag(*command);
   command->callback([&runner, options] { runner = [options] { return run_bench_frame(*options); }; });
 }
 

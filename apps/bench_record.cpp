@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "apps/commands.h"
+#include "settings/limits.h"
 #include "base/atomic_file.h"
 #include "gpu/scene_renderer.h"
 #include "image/image.h"
@@ -180,10 +181,11 @@ void add_bench_record_command(CLI::App& bench, CommandRunner& runner) {
       "record", "record's frame rate against bench frame's in one run, per PNG encoder and zlib level");
   command->add_option("--frames", options->frames, "Frames per variant and repeat")->check(CLI::Range(2, 1000));
   command->add_option("--repeats", options->repeats, "Interleaved repeats")->check(CLI::Range(1, 100));
-  command->add_option("--size", options->size, "Square output size")->check(CLI::Range(16, 4096));
+  command->add_option("--size", options->size, "Square output size")->check(CLI::Range(settings::kMinImageSize, settings::kMaxImageSize));
   command->add_option("--levels", options->levels, "libpng zlib levels to measure")->delimiter(',');
   command->add_option("--scene", options->scene, "Built-in scene")->check(CLI::IsMember({"default", "crowd"}));
   add_device_option(*command, options->device);
+  add_quiet_flag(*command);
   command->callback([&runner, options] { runner = [options] { return run_bench_record(*options); }; });
 }
 

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/commands.h"
+#include "settings/limits.h"
 #include "study/chart_scenes.h"
 #include "study/reference_study.h"
 
@@ -119,12 +120,13 @@ void add_bench_sampler_command(CLI::App& bench, CommandRunner& runner) {
   auto options = std::make_shared<SamplerBenchOptions>();
   auto* command = bench.add_subcommand(
       "sampler", "Reference noise at equal spp: Owen-scrambled Sobol against plain Monte Carlo (two seeds each)");
-  command->add_option("--size", options->size, "Square image size")->check(CLI::Range(8, 1024));
-  command->add_option("--spp", options->spp, "Samples per pixel to measure")->delimiter(',');
+  command->add_option("--size", options->size, "Square image size")->check(CLI::Range(settings::kMinImageSize, settings::kMaxImageSize));
+  command->add_option("--spp", options->spp, "Samples per pixel to measure")->delimiter(',')->check(CLI::Range(1, settings::kMaxSamplesPerPixel));
   command->add_option("--scenes", options->scenes, "Chart scenes (default, CesiumMan, Fox, RiggedSimple)")
       ->delimiter(',');
   command->add_option("--shared", options->shared, "Folder holding assets/gltf with the sample characters");
   command->add_flag("--json", options->json, "Machine-readable output");
+  add_quiet_flag(*command);
   command->callback([&runner, options] { runner = [options] { return run_bench_sampler(*options); }; });
 }
 

@@ -198,6 +198,7 @@ void add_bench_sh_command(CLI::App& bench, CommandRunner& runner) {
   command->add_option("--seed", args->seed, "Random seed (default 2007)");
   command->add_option("--orders", args->orders, "SH orders, 3..6 (default 3,4,5)")->delimiter(',');
   command->add_option("--min-time", args->min_time, "Seconds of timing per method and order (default 0.05)");
+  add_quiet_flag(*command);
   command->callback([&runner, args] { runner = [args] { return run_bench_sh(*args); }; });
 }
 

@@ -2,6 +2,7 @@
 // (benchmarks/*.cpp, linked into this binary), e.g. `proxygi bench micro --filter '^anim/'`.
 #include <benchmark/benchmark.h>
 
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -20,7 +21,12 @@ int run_micro_benchmarks(const std::string& filter, bool json, const std::string
   int argc = static_cast<int>(argv.size());
   benchmark::Initialize(&argc, argv.data());
   if (benchmark::ReportUnrecognizedArguments(argc, argv.data())) return kExitBadInput;
-  const std::size_t ran = benchmark::RunSpecifiedBenchmarks();
+  // --quiet: Google Benchmark's context banner and table go nowhere (--json still prints).
+  std::ofstream nowhere("/dev/null");
+  benchmark::ConsoleReporter silent;
+  silent.SetOutputStream(&nowhere);
+  silent.SetErrorStream(&nowhere);
+  const std::size_t ran = quiet() && !json ? benchmark::RunSpecifiedBenchmarks(&silent) : benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   if (ran == 0) return fail_bad_input("bench micro: no benchmark matches '" + filter + "'");
   return kExitOk;
@@ -42,6 +48,7 @@ void add_bench_command(CLI::App& app, CommandRunner& runner) {
   micro->add_option("--filter", options->filter, "Regular expression over benchmark names, e.g. '^anim/'");
   micro->add_flag("--json", options->json, "Google Benchmark JSON on stdout");
   micro->add_option("--min-time", options->min_time, "Minimum seconds per benchmark");
+  add_quiet_flag(*micro);
   micro->callback([&runner, options] {
     runner = [options] { return run_micro_benchmarks(options->filter, options->json, options->min_time); };
   });

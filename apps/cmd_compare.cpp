@@ -157,6 +157,7 @@ void add_compare_command(CLI::App& app, CommandRunner& runner) {
       ->check(CLI::IsMember({"auto", "ldr", "hdr"}));
   command->add_option("--ppd", args.pixels_per_degree, "FLIP observer: pixels per degree of visual angle (default 67)")
       ->check(CLI::PositiveNumber);
+  add_quiet_flag(*command);
   command->callback([&runner] { runner = [] { return run_compare(args); }; });
 }
 

@@ -77,6 +77,7 @@ void add_devices_command(CLI::App& app, CommandRunner& runner) {
   auto device = std::make_shared<std::string>();
   command->add_flag("--json", *json, "Machine-readable output");
   add_device_option(*command, *device);
+  add_quiet_flag(*command);
   command->callback([&runner, json, device] { runner = [json, device] { return run_devices(*json, *device); }; });
 }
 

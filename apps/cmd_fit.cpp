@@ -11,6 +11,7 @@
 #include "anim/gltf_import.h"
 #include "anim/mannequin.h"
 #include "apps/commands.h"
+#include "settings/limits.h"
 #include "apps/model_input.h"
 #include "proxies/fit.h"
 #include "proxies/rig_cache.h"
@@ -115,9 +116,11 @@ void add_fit_command(CLI::App& app, CommandRunner& runner) {
   command->add_option("-o,--output", args->output, "rig file (default: MODEL.proxies.json next to the model, or in $XDG_CACHE_HOME/proxygi when that folder is not writable)");
   command->add_option("--tolerance", args->tolerance, "allowed protrusion, relative to the bounding-box diagonal, in [0.0001, 1]")
       ->check(CLI::Range(0.0001f, 1.0f));
-  command->add_option("--max-spheres", args->max_spheres, "cap on the sphere count, in [1, 4096]")->check(CLI::Range(1, 4096));
+  command->add_option("--max-spheres", args->max_spheres, "cap on the sphere count, at most 4096 (settings/limits.h)")
+      ->check(CLI::Range(1, settings::kMaxProxySpheres));
   command->add_flag("--json", args->json, "print the report as JSON on stdout");
   command->add_flag("--force", args->force, "refit even when the cached rig matches");
+  add_quiet_flag(*command);
   command->callback([&runner, args] { runner = [args] { return run_fit(*args); }; });
 }
 

@@ -1,5 +1,8 @@
-// proxygi info MODEL [--json]: what the importer sees in a glTF file (counts per object kind,
-// per mesh, per skin, per material and per clip). Bad or unsupported input exits with code 2.
+// proxygi info MODEL [--json] [--validate] [--quiet]: what the importer sees in a glTF file (counts
+// per object kind, per mesh, per skin, per material and per clip). Bad or unsupported input exits
+// with code 2. --validate lists every problem found (anim/gltf_validate.h), glTF-Validator style,
+// on stderr ("error: FILE/accessors/3/max: ...") and under "validation" in --json; exit 2 when
+// any is an error, 0 with warnings only.
 #include <algorithm>
 #include <cstdio>
 #include <set>
@@ -14,6 +17,7 @@
 #include <vector>
 
 #include "anim/gltf_import.h"
+#include "anim/gltf_validate.h"
 #include "anim/posed_character.h"
 #include "apps/model_input.h"
 #include "apps/commands.h"
@@ -149,15 +153,47 @@ struct InfoArgs {
   std::string model;
   bool json = false;
   bool validate = false;
-  bool quiet = false;
 };
 
+nlohmann::json to_json(const anim::ValidationReport& report) {
+  nlohmann::json issues = nlohmann::json::array();
+  for (const anim::ValidationIssue& issue : report.issues)
+    issues.push_back({{"severity", anim::severity_name(issue.severity)}, {"pointer", issue.pointer}, {"message", issue.message}});
+  return {{"errors", report.errors()}, {"warnings", report.warnings()}, {"issues", issues}};
+}
+
+// --validate: every issue on stderr, then the count; exit 2 with any error.
+int finish_validation(const anim::ValidationReport& report, const std::string& model) {
+  for (const anim::ValidationIssue& issue : report.issues)
+    std::fprintf(stderr, "%s: %s%s: %s\n", anim::severity_name(issue.severity), report.source.c_str(), issue.pointer.c_str(),
+                 issue.message.c_str());
+  if (report.errors() > 0) {
+    std::fprintf(stderr, "proxygi: %s: %zu error%s, %zu warning%s\n", model.c_str(), report.errors(), report.errors() > 1 ? "s" : "",
+                 report.warnings(), report.warnings() == 1 ? "" : "s");
+    return kExitBadInput;
+  }
+  return kExitOk;
+}
+
 int run_info(const InfoArgs& args) {
+  std::optional<anim::ValidationReport> report;
+  if (args.validate) {
+    std::error_code missing;
+    const std::filesystem::path file = names_the_mannequin(args.model) ? assets_dir() / "mannequin.glb" : std::filesystem::path(args.model);
+    if (!names_the_mannequin(args.model) || std::filesystem::exists(file, missing)) report = anim::validate_gltf(file);
+    else report = anim::ValidationReport{args.model, {}};  // the mannequin built in code: no file to check
+  }
   auto model = open_model(args.model);
-  if (!model) return fail_bad_input(model.message());
+  if (!model) {
+    if (!report) return fail_bad_input(model.message());
+    if (report->errors() == 0) report->issues.push_back({anim::ValidationIssue::Severity::error, "", model.message()});
+    if (args.json) std::printf("%s\n", nlohmann::json{{"source", args.model}, {"validation", to_json(*report)}}.dump(2).c_str());
+    return finish_validation(*report, args.model);
+  }
   const anim::Character& character = model->character;
   nlohmann::json info = to_json(character);
-  std::vector<std::string> warnings = proxies::node_name_warnings(character);
+  // --validate names unnamed and duplicate nodes itself, one issue per node.
+  std::vector<std::string> warnings = report ? std::vector<std::string>{} : proxies::node_name_warnings(character);
   // Where the model stands: rest-pose bounds, height, and which way is up.
   if (auto bounds = rest_bounds(character)) {
     const glm::vec3 extent = bounds->second - bounds->first;
@@ -202,9 +238,7 @@ int run_info(const InfoArgs& args) {
     }
   }
   info["warnings"] = warnings;
-  if (args.json) {
-    std::printf("%s\n", info.dump(2).c_str());
-  } else if (!args.quiet) {
+  if (!args.json) {
     print_table(info);
     if (info.contains("bounds_m")) {
       const auto& lo = info["bounds_m"]["min"];
@@ -218,12 +252,13 @@ int run_info(const InfoArgs& args) {
     if (!joint_names.empty()) std::printf("  joints:%s\n", names.c_str());
     if (rig) std::printf("\n%s\n", proxies::format_rig_summary(*rig).c_str());
   }
-  for (const std::string& warning : warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
-  // --validate: every problem found is listed above; any makes the exit code 2 (glTF-Validator style).
-  if (args.validate && !warnings.empty()) {
-    std::fprintf(stderr, "proxygi: %s: %zu problem%s found\n", args.model.c_str(), warnings.size(), warnings.size() > 1 ? "s" : "");
-    return kExitBadInput;
+  if (report) {
+    for (const std::string& warning : warnings) report->issues.push_back({anim::ValidationIssue::Severity::warning, "", warning});
+    info["validation"] = to_json(*report);
   }
+  if (args.json) std::printf("%s\n", info.dump(2).c_str());
+  if (report) return finish_validation(*report, args.model);
+  for (const std::string& warning : warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
   return kExitOk;
 }
 
@@ -234,8 +269,9 @@ void add_info_command(CLI::App& app, CommandRunner& runner) {
   auto args = std::make_shared<InfoArgs>();
   command->add_option("model", args->model, "glTF (.gltf) or binary glTF (.glb) file, or 'mannequin'")->required();
   command->add_flag("--json", args->json, "Print one JSON object instead of tables");
-  command->add_flag("--validate", args->validate, "List every problem found and exit 2 when there is any");
-  command->add_flag("-q,--quiet", args->quiet, "Print only warnings and errors");
+  command->add_flag("--validate", args->validate,
+                    "List every problem found (glTF-Validator style: severity, JSON pointer, message); exit 2 when any is an error");
+  add_quiet_flag(*command);
   command->callback([&runner, args] { runner = [args] { return run_info(*args); }; });
 }
 

@@ -14,6 +14,7 @@ void add_mannequin_command(CLI::App& app, CommandRunner& runner) {
   auto* command = app.add_subcommand("mannequin", "Write the built-in procedural mannequin (walk, run, wave) as glTF");
   auto output = std::make_shared<std::string>();
   command->add_option("-o,--output", *output, "Output file: .glb or .gltf")->required();
+  add_quiet_flag(*command);
   command->callback([&runner, output] {
     runner = [output] {
       const std::string extension = std::filesystem::path(*output).extension().string();

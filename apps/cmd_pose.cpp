@@ -206,6 +206,7 @@ void add_pose_command(CLI::App& app, CommandRunner& runner) {
   command->add_flag("--proxies", options->proxies,
                     "Also write the proxy spheres (the rig cached next to the model, fitted when missing)");
   command->add_option("-o,--output", options->output, "Output mesh: .obj or .ply (default: print a summary only)");
+  add_quiet_flag(*command);
   command->callback([&runner, options] { runner = [options] { return run_pose(*options); }; });
 }
 

@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "apps/commands.h"
+#include "settings/limits.h"
 #include "base/log.h"
 #include "apps/record_output.h"
 #include "apps/record_progress.h"
@@ -44,7 +45,6 @@ struct RecordArgs {
   bool no_mp4 = false;
   bool aov = false;
   bool overwrite = false;
-  bool quiet = false;
   bool refit = false;
   bool verify = false;
   int width = 0;   // 0: the scene's
@@ -123,7 +123,7 @@ int encode_when_complete(const RecordPlan& plan, const run::FrameRange& range, d
                                    "and run again, or pass --no-mp4)");
   if (Status s = encode_video({*ffmpeg, plan.dir, range.first, range.last - range.first + 1, fps}); !s)
     return fail_runtime("video.mp4: " + s.message());
-  std::fprintf(stderr, "record: wrote %s\n", video_file(plan.dir).c_str());
+  if (!quiet()) std::fprintf(stderr, "record: wrote %s\n", video_file(plan.dir).c_str());
   return kExitOk;
 }
 
@@ -181,7 +181,7 @@ int run_record(const RecordArgs& args) {
     if (Status s = write_manifest(plan.dir, manifest); !s) return fail_runtime(s.message());
   int stale = remove_stale_temporaries(plan.dir);
   if (plan.aov) stale += remove_stale_temporaries(plan.dir / "aov");
-  if (stale > 0) std::fprintf(stderr, "record: removed %d temporary file%s left by an interrupted run\n", stale, stale > 1 ? "s" : "");
+  if (stale > 0 && !quiet()) std::fprintf(stderr, "record: removed %d temporary file%s left by an interrupted run\n", stale, stale > 1 ? "s" : "");
   for (int frame : *share) {
     if (!args.overwrite && frame_done(plan.dir, frame, plan.exr, plan.aov, args.verify)) ++plan.skipped;
     else plan.frames.push_back(frame);
@@ -190,8 +190,7 @@ int run_record(const RecordArgs& args) {
   // --quiet: no progress, no summary, no info lines; warnings and errors still print.
   std::FILE* progress_stream = stderr;
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> null_stream(nullptr, &std::fclose);
-  if (args.quiet) {
-    set_log_level(LogLevel::quiet);
+  if (quiet()) {
     null_stream.reset(std::fopen("/dev/null", "w"));
     if (null_stream) progress_stream = null_stream.get();
   }
@@ -228,7 +227,7 @@ int run_record(const RecordArgs& args) {
 
   if (!want_mp4) return kExitOk;
   if (!args.shard.empty()) {
-    std::fprintf(stderr, "record: shards do not encode video; when all shards are done, run again without --shard\n");
+    if (!quiet()) std::fprintf(stderr, "record: shards do not encode video; when all shards are done, run again without --shard\n");
     return kExitOk;
   }
   return encode_when_complete(plan, requested.value_or(run::scene_frame_range(scene.output)), scene.output.fps,
@@ -258,13 +257,13 @@ void add_record_command(CLI::App& app, CommandRunner& runner) {
   command->add_flag("--aov", args->aov,
                     "Render one frame at a time and write DIR/aov/frame_%05d_{receivers,occlusion_dc,direct,"
                     "indirect,upsampled}.exr and _proxies.png");
-  command->add_option("--width", args->width, "Override the scene's output width")->check(CLI::Range(16, 8192));
-  command->add_option("--height", args->height, "Override the scene's output height")->check(CLI::Range(16, 8192));
+  command->add_option("--width", args->width, "Override the scene's output width")->check(CLI::Range(settings::kMinImageSize, settings::kMaxImageSize));
+  command->add_option("--height", args->height, "Override the scene's output height")->check(CLI::Range(settings::kMinImageSize, settings::kMaxImageSize));
   command->add_flag("--overwrite", args->overwrite,
                     "Render every frame again, also into a folder recorded from another scene or size");
   command->add_flag("--refit", args->refit,
                     "Fit every proxy rig again and write it, also a rig file the scene names (else used as it is)");
-  command->add_flag("-q,--quiet", args->quiet, "Print only warnings and errors (for scripts)");
+  add_quiet_flag(*command);
   command->add_flag("--verify", args->verify, "Decode the frames already in the folder; render again those that do not decode");
   add_device_option(*command, args->device);
   command->callback([args, &runner] { runner = [args] { return run_record(*args); }; });

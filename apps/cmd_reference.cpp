@@ -1,14 +1,18 @@
 // proxygi reference SCENE --frame F --spp N -o OUT.exr [--mode direct|one-bounce|multi-bounce]
 //   [--lighting sh|full] [--lighting-order N] [--width W --height H] [--seed S] [--sampler sobol|random] [--threads T] [--accumulate]
-//   [--guided-filter [--filter-radius R]]
+//   [--guided-filter [--filter-radius R]] [--quiet]
 // Path-traces one frame of a scene with Embree (the ground truth of the accuracy study) and
 // writes OUT.exr plus its feature and statistics files (ref/reference_render_io.h lists them).
+// Ctrl-C (SIGINT, SIGTERM) stops after the sample in progress and keeps the whole samples so far
+// (OUT.* with OUT.partial, the exact sums); the same command with --accumulate finishes them, to
+// the bits an uninterrupted run writes.
 // SCENE is a scene file, or "default" / "crowd" for a built-in scene (a file by that name wins).
 // The scene is loaded and posed by world::World (the GPU renderer's rules), without proxy rigs.
 // Bad arguments or scenes exit 2, failures while rendering or writing exit 1.
 #include <unistd.h>
 
 #include <algorithm>
+#include <csignal>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -16,6 +20,7 @@
 #include <string>
 
 #include "apps/commands.h"
+#include "settings/limits.h"
 #include "image/image.h"
 #include "ref/embree_scene.h"
 #include "apps/scene_input.h"
@@ -50,7 +55,14 @@ struct ReferenceArgs {
   bool guided_filter = false;
   int filter_radius = 24;
   std::string preview;  // optional PNG of OUT.exr (clamped, sRGB), for a quick look
+  int stop_after_samples = 0;  // test hook: raise SIGINT after this many samples of this run
 };
+
+volatile std::sig_atomic_t g_interrupted = 0;
+extern "C" void on_reference_interrupt(int signal) {
+  g_interrupted = 1;
+  std::signal(signal, SIG_DFL);  // a second Ctrl-C ends the process at once
+}
 
 std::string format_duration(double seconds) {
   char text[32];
@@ -105,6 +117,7 @@ int run_reference(const ReferenceArgs& args) {
     if (error) return fail_runtime(folder.string() + ": cannot create the output folder: " + error.message());
   }
   std::optional<ref::SampleSums> previous;
+  int spp = args.spp;  // samples this run traces
   if (args.accumulate && std::filesystem::exists(paths.record)) {
     auto old = ref::read_record(paths.record);
     if (!old) return fail_bad_input(old.message());
@@ -116,7 +129,17 @@ int run_reference(const ReferenceArgs& args) {
     record.samples = old->samples;
     record.seconds = old->seconds;
     record.rays = old->rays;
+    if (old->target_samples > old->samples) {  // an interrupted run: finish what it was asked for
+      spp = int(old->target_samples - old->samples);
+      if (!quiet())
+        std::fprintf(stderr, "reference: resuming an interrupted run: %u of %u samples done, tracing the %d missing%s\n",
+                     old->samples, old->target_samples, spp, args.spp != spp ? " (instead of --spp)" : "");
+    }
   }
+  if (std::uint64_t(record.samples) + std::uint64_t(spp) > std::uint64_t(settings::kMaxSamplesPerPixel))
+    return fail_bad_input("--accumulate: " + std::to_string(record.samples) + " + " + std::to_string(spp) +
+                          " samples is more than the limit of " + std::to_string(settings::kMaxSamplesPerPixel) + " per pixel");
+  record.target_samples = record.samples + std::uint32_t(spp);
 
   auto world = world::World::load(scene, {.assets_dir = assets_dir(), .load_rigs = false});
   if (!world) return fail_bad_input(record.scene + ": " + world.message());
@@ -134,22 +157,27 @@ int run_reference(const ReferenceArgs& args) {
   const ref::PathTracer tracer(*geometry, *lighting, *background, settings);
   const scene::CameraState& camera = state.camera;
 
-  std::fprintf(stderr, "reference: %s frame %d (t = %.3f s), %d triangles, %dx%d, %d spp (samples %u..%u), %s, %s lighting\n",
-               record.scene.c_str(), args.frame, record.time_s, int(geometry->triangle_count()), width, height, args.spp,
-               record.samples, record.samples + std::uint32_t(args.spp) - 1, args.mode.c_str(), args.lighting.c_str());
+  if (!quiet())
+    std::fprintf(stderr, "reference: %s frame %d (t = %.3f s), %d triangles, %dx%d, %d spp (samples %u..%u), %s, %s lighting\n",
+                 record.scene.c_str(), args.frame, record.time_s, int(geometry->triangle_count()), width, height, spp,
+                 record.samples, record.target_samples - 1, args.mode.c_str(), args.lighting.c_str());
   ref::RenderJob job;
   job.width = width;
   job.height = height;
-  job.spp = args.spp;
+  job.spp = spp;
   job.first_sample = record.samples;
   job.seed = args.seed;
   job.sampler = args.sampler == "random" ? ref::Sampler::random : ref::Sampler::sobol;
   job.threads = args.threads;
+  job.stop = &g_interrupted;
   ref::RenderStats stats;
   // On a terminal one line rewritten with \r; into a file or pipe a line per tenth of the work.
   const bool terminal = isatty(fileno(stderr)) != 0;
   int last_tenth = -1;
-  auto progress = [terminal, &last_tenth](const ref::RenderProgress& p) {
+  auto progress = [terminal, &last_tenth, &args](const ref::RenderProgress& p) {
+    if (args.stop_after_samples > 0 && p.samples_done >= std::uint32_t(args.stop_after_samples) && !g_interrupted)
+      std::raise(SIGINT);
+    if (quiet()) return;
     const double percent = 100.0 * p.tiles_done / std::max(p.tiles_total, 1);
     if (!terminal) {
       if (int(percent / 10.0) == last_tenth) return;
@@ -160,18 +188,34 @@ int run_reference(const ReferenceArgs& args) {
                  p.elapsed_s > 0.0 ? double(p.rays) / p.elapsed_s * 1e-6 : 0.0, terminal ? "   " : "\n");
     std::fflush(stderr);
   };
-  auto sums = ref::render_samples(tracer, camera, job, &stats, progress);
-  if (terminal) std::fprintf(stderr, "\n");
-  if (!sums) return fail_bad_input(sums.message());
+  ref::SampleSums sums;
   if (previous) {
-    if (Status s = previous->merge(*sums); !s) return fail_bad_input("--accumulate: " + s.message());
     sums = std::move(*previous);
+  } else {
+    sums.width = width;
+    sums.height = height;
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
+    sums.radiance.assign(pixels, glm::dvec3(0.0));
+    sums.radiance_squared.assign(pixels, glm::dvec3(0.0));
+    sums.indirect.assign(pixels, glm::dvec3(0.0));
   }
-  record.samples = sums->samples;
+  std::signal(SIGINT, on_reference_interrupt);
+  std::signal(SIGTERM, on_reference_interrupt);
+  const std::uint32_t samples_before = sums.samples;
+  const Status traced = ref::accumulate_samples(tracer, camera, job, sums, &stats, progress);
+  std::signal(SIGINT, SIG_DFL);  // writing the files below takes moments; they are atomic anyway
+  std::signal(SIGTERM, SIG_DFL);
+  if (terminal && !quiet()) std::fprintf(stderr, "\n");
+  if (!traced) return fail_bad_input(traced.message());
+  const bool finished = sums.samples == record.target_samples;
+  if (!finished && sums.samples == samples_before)
+    return fail_runtime("interrupted before the first sample was finished; " + paths.radiance.string() + " is unchanged");
+  const int traced_spp = int(sums.samples - samples_before);
+  record.samples = sums.samples;
   record.seconds += stats.seconds;
   record.rays += stats.rays;
 
-  const ref::ReferenceImages images = ref::to_images(*sums);
+  const ref::ReferenceImages images = ref::to_images(sums);
   const ref::PixelFeatures features = ref::render_features(*geometry, camera, width, height);
   std::optional<image::ImageF> filtered;
   if (args.guided_filter) {
@@ -182,14 +226,23 @@ int run_reference(const ReferenceArgs& args) {
     if (!result) return fail_runtime(result.message());
     filtered = std::move(*result);
   }
+  std::error_code ignored;
+  if (!finished) {
+    if (Status s = ref::write_partial_sums(paths.partial, sums); !s) return fail_runtime(s.message());
+  }
   if (Status s = ref::write_reference(paths, images, features, record, filtered ? &*filtered : nullptr); !s)
     return fail_runtime(s.message());
+  if (finished) std::filesystem::remove(paths.partial, ignored);
   if (!args.preview.empty()) {
     const image::ImageF& shown = filtered ? *filtered : images.radiance;
     if (Status s = image::write_png(args.preview, shown); !s) return fail_runtime(s.message());
   }
+  if (!finished)
+    return fail_runtime("interrupted: kept " + std::to_string(record.samples) + " of " + std::to_string(record.target_samples) +
+                        " samples in " + paths.radiance.string() + "; run the same command with --accumulate to finish");
   std::printf("%s: %u spp, %.2f s tracing (%.1f ms per spp), %.3g rays, %.2f Mrays/s\n", paths.radiance.string().c_str(),
-              record.samples, stats.seconds, 1e3 * stats.seconds / args.spp, double(stats.rays), stats.mrays_per_second());
+              record.samples, stats.seconds, 1e3 * stats.seconds / std::max(traced_spp, 1), double(stats.rays),
+              stats.mrays_per_second());
   return kExitOk;
 }
 
@@ -202,7 +255,7 @@ void add_reference_command(CLI::App& app, CommandRunner& runner) {
   command->add_option("--frame", args->frame, "Frame index (scene time = frame / fps)")->required();
   command->add_option("--spp", args->spp, "Samples (paths) per pixel to trace in this run")
       ->required()
-      ->check(CLI::Range(1, 1 << 24));
+      ->check(CLI::Range(1, settings::kMaxSamplesPerPixel));
   command->add_option("-o,--output", args->output, "Output radiance EXR (feature files are written next to it)")
       ->required();
   command->add_option("--mode", args->mode, "Light transport: direct, one-bounce or multi-bounce")
@@ -217,8 +270,8 @@ void add_reference_command(CLI::App& app, CommandRunner& runner) {
                       "SH order (bands) of the sh lighting, the reference's own band limit (default: the scene's "
                       "render.sh_order)")
       ->check(CLI::Range(sh::kMinOrder, sh::kMaxOrder));
-  command->add_option("--width", args->width, "Image width (default: the scene's)")->check(CLI::Range(1, 16384));
-  command->add_option("--height", args->height, "Image height (default: the scene's)")->check(CLI::Range(1, 16384));
+  command->add_option("--width", args->width, "Image width (default: the scene's)")->check(CLI::Range(settings::kMinImageSize, settings::kMaxImageSize));
+  command->add_option("--height", args->height, "Image height (default: the scene's)")->check(CLI::Range(settings::kMinImageSize, settings::kMaxImageSize));
   command->add_option("--seed", args->seed, "Random seed; the same seed gives the same image")->capture_default_str();
   command->add_option("--sampler", args->sampler,
                       "sobol: Owen-scrambled Sobol pairs (default); random: plain Monte Carlo (before 2026-12)")
@@ -226,13 +279,17 @@ void add_reference_command(CLI::App& app, CommandRunner& runner) {
       ->capture_default_str();
   command->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(0, 1024));
   command->add_flag("--accumulate", args->accumulate,
-                    "Continue from OUT's previous samples (same scene, frame, size, mode, lighting and seed)");
+                    "Continue from OUT's previous samples (same scene, frame, size, mode, lighting and seed); "
+                    "after an interrupted run, trace the samples it was missing");
   command->add_flag("--guided-filter", args->guided_filter,
                     "Guided-filter the indirect part by normal and depth (the denoised low-spp method)");
   command->add_option("--filter-radius", args->filter_radius, "Guided filter window radius in pixels")
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
   command->add_option("--preview", args->preview, "Also write this PNG of the radiance (clamped to [0, 1], sRGB)");
+  // Test hook (not in --help): behave as if Ctrl-C came after N samples of this run.
+  command->add_option("--stop-after-samples", args->stop_after_samples)->group("")->check(CLI::Range(1, settings::kMaxSamplesPerPixel));
+  add_quiet_flag(*command);
   command->callback([args, &runner] { runner = [args] { return run_reference(*args); }; });
 }
 

@@ -164,6 +164,7 @@ void add_regress_command(CLI::App& app, CommandRunner& runner) {
   command->add_flag("--sensitivity", args->sensitivity, "Apply known small faults and report which checks catch each");
   command->add_option("--merge", args->merge, "Merge shard report folders (their results.json) into --report")->expected(1, -1);
   add_device_option(*command, args->device);
+  add_quiet_flag(*command);
   command->callback([args, &runner] { runner = [args] { return run_regress(*args); }; });
 }
 

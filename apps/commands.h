@@ -27,6 +27,13 @@ std::filesystem::path assets_dir();
 // Adds --device NAME|INDEX to a subcommand (falls back to $PROXYGI_DEVICE when not given).
 void add_device_option(CLI::App& command, std::string& device);
 
+// Adds -q/--quiet to a subcommand (every command has it). With it, main() silences the library
+// log and stdout (except output asked for with --json), and commands skip their progress and
+// informational lines on stderr: only warnings and errors print.
+void add_quiet_flag(CLI::App& command);
+// True when the command being run was given --quiet.
+bool quiet();
+
 // Top-level commands, one file each (apps/cmd_<name>.cpp).
 void add_devices_command(CLI::App& app, CommandRunner& runner);  // cmd_devices.cpp
 void add_info_command(CLI::App& app, CommandRunner& runner);     // cmd_info.cpp

@@ -2,7 +2,11 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include <unistd.h>
+#include <fcntl.h>
+
 #include "apps/commands.h"
+#include "base/log.h"
 
 #ifndef PROXYGI_ASSETS_DIR
 #define PROXYGI_ASSETS_DIR "assets"
@@ -26,6 +30,38 @@ int fail_runtime(const std::string& message) {
 std::filesystem::path assets_dir() {
   if (const char* overridden = std::getenv("PROXYGI_ASSETS")) return overridden;
   return PROXYGI_ASSETS_DIR;
+}
+
+namespace {
+bool g_quiet = false;
+}  // namespace
+
+bool quiet() { return g_quiet; }
+
+void add_quiet_flag(CLI::App& command) {
+  command.add_flag("-q,--quiet", g_quiet, "Print only warnings and errors (no progress, no summary; for scripts)");
+}
+
+// --quiet: the log goes quiet and stdout to /dev/null, unless the command was asked for --json
+// (data on stdout, not information).
+void apply_quiet(const CLI::App& app) {
+  if (!g_quiet) return;
+  set_log_level(LogLevel::quiet);
+  const CLI::App* command = &app;
+  bool json = false;
+  while (true) {
+    if (command->get_option_no_throw("--json") != nullptr && command->count("--json") > 0) json = true;
+    const auto chosen = command->get_subcommands();
+    if (chosen.empty()) break;
+    command = chosen.front();
+  }
+  if (json) return;
+  std::fflush(stdout);
+  const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+  if (null >= 0) {
+    ::dup2(null, STDOUT_FILENO);
+    ::close(null);
+  }
 }
 
 void add_device_option(CLI::App& command, std::string& device) {
@@ -81,5 +117,6 @@ int main(int argc, char** argv) {
     return kExitBadInput;
   }
   if (!runner) return fail_bad_input("no command to run");
+  apply_quiet(app);
   return runner();
 }

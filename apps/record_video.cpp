@@ -17,20 +17,46 @@ extern char** environ;
 namespace proxygi::app {
 namespace {
 
-// Runs argv[0] with argv (no shell, so folder names need no quoting) and waits for it.
+// Runs argv[0] with argv (no shell, so folder names need no quoting) and waits for it. Its stderr
+// is captured into the error message (one line), not printed: it names the temporary file it
+// writes, which write_via_temporary replaces by the user's path.
 Status run_process(const std::vector<std::string>& argv) {
   std::vector<char*> raw;
   for (const std::string& arg : argv) raw.push_back(const_cast<char*>(arg.c_str()));
   raw.push_back(nullptr);
+  int pipe_fds[2];
+  if (pipe(pipe_fds) != 0) return make_error(argv[0] + ": pipe: " + std::strerror(errno));
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, pipe_fds[1], STDERR_FILENO);
+  posix_spawn_file_actions_addclose(&actions, pipe_fds[0]);
   pid_t pid = 0;
-  if (const int error = posix_spawn(&pid, raw[0], nullptr, nullptr, raw.data(), environ); error != 0)
-    return make_error(argv[0] + ": cannot start: " + std::strerror(error));
+  const int spawned = posix_spawn(&pid, raw[0], &actions, nullptr, raw.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  close(pipe_fds[1]);
+  if (spawned != 0) {
+    close(pipe_fds[0]);
+    return make_error(argv[0] + ": cannot start: " + std::strerror(spawned));
+  }
+  std::string output;
+  char buffer[4096];
+  for (ssize_t n; (n = read(pipe_fds[0], buffer, sizeof buffer)) != 0;) {
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) break;
+    output.append(buffer, std::size_t(n));
+    if (output.size() > 8192) output.erase(0, output.size() - 8192);  // the end says what failed
+  }
+  close(pipe_fds[0]);
   int status = 0;
   while (waitpid(pid, &status, 0) < 0)
     if (errno != EINTR) return make_error(argv[0] + ": waitpid: " + std::strerror(errno));
   if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return {};
-  if (WIFSIGNALED(status)) return make_error(argv[0] + " was killed by signal " + std::to_string(WTERMSIG(status)));
-  return make_error(argv[0] + " exited with status " + std::to_string(WEXITSTATUS(status)));
+  while (!output.empty() && (output.back() == '\n' || output.back() == ' ')) output.pop_back();
+  for (char& c : output)
+    if (c == '\n') c = ';';
+  const std::string said = output.empty() ? std::string() : ": " + output;
+  if (WIFSIGNALED(status)) return make_error(argv[0] + " was killed by signal " + std::to_string(WTERMSIG(status)) + said);
+  return make_error(argv[0] + " exited with status " + std::to_string(WEXITSTATUS(status)) + said);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "apps/commands.h"
+#include "settings/limits.h"
 #include "apps/model_input.h"
 #include "base/atomic_file.h"
 #include "scene/scene_defaults.h"
@@ -21,7 +22,7 @@ void add_scene_options(CLI::App& command, SceneArgs& args, bool frame_count) {
   command.add_option("--clip", args.clip, "With a model: its clip, by name or index (default: 0)");
   if (frame_count)
     command.add_option("-f,--frame-count", args.frame_count, "With a model: frames to render (default: one pass of the clip)")
-        ->check(CLI::Range(1, 1000000));
+        ->check(CLI::Range(1, settings::kMaxFrameCount));
   command.add_option("--write-scene", args.write_scene, "Also write the scene as JSON to FILE (to edit and render again)");
 }
 
@@ -63,7 +64,7 @@ Result<scene::Scene> open_scene(const SceneArgs& args) {
     auto text = scene::to_json(*scene);
     if (!text) return text.error();
     if (Status written = write_file_atomically(args.write_scene, *text + "\n"); !written) return written.error();
-    std::fprintf(stderr, "wrote %s\n", args.write_scene.c_str());
+    if (!quiet()) std::fprintf(stderr, "wrote %s\n", args.write_scene.c_str());
   }
   return scene;
 }

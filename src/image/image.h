@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "base/result.h"
+#include "settings/limits.h"
 
 namespace proxygi::image {
 
@@ -33,7 +34,7 @@ struct ImageF {
 // - .exr: single-part scanline files, any compression tinyexr knows; channels R, G, B (or Y for
 //   gray) and optional A, each half, float or uint (converted to float); missing alpha is 1.
 //   Tiled, multi-part and deep files are refused.
-Result<ImageF> read_image(const std::filesystem::path& path, std::size_t max_pixels = std::size_t(1) << 26);
+Result<ImageF> read_image(const std::filesystem::path& path, std::size_t max_pixels = settings::kMaxImagePixels);
 
 // 8-bit sRGB RGBA PNG of linear values (clamped to [0, 1], NaN -> 0, rounded to the nearest
 // code; alpha clamped and written without sRGB encoding). Deterministic bytes.

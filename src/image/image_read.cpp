@@ -31,7 +31,10 @@ Status check_size(const std::filesystem::path& path, std::int64_t width, std::in
     return file_error(path, "invalid size " + std::to_string(width) + "x" + std::to_string(height));
   if (std::uint64_t(width) * std::uint64_t(height) > max_pixels)
     return file_error(path, "image is " + std::to_string(width) + "x" + std::to_string(height) +
-                                ", more than the limit of " + std::to_string(max_pixels) + " pixels");
+                                ", more than the limit of " + std::to_string(max_pixels) + " pixels" +
+                                (max_pixels == settings::kMaxImagePixels ? " (" + std::to_string(settings::kMaxImageSize) + " x " +
+                                                                               std::to_string(settings::kMaxImageSize) + ")"
+                                                                         : std::string()));
   return {};
 }
 

@@ -28,29 +28,35 @@ std::vector<Tile> make_tiles(int width, int height, int size) {
   return tiles;
 }
 
-void render_tile(const PathTracer& tracer, const scene::CameraState& camera, const RenderJob& job, const Tile& tile,
-                 SampleSums& sums, std::uint64_t& rays) {
+// Adds sample index `sample` of every pixel of the tile to its sums (one round).
+void render_tile(const PathTracer& tracer, const scene::CameraState& camera, const RenderJob& job, std::uint32_t sample,
+                 const Tile& tile, SampleSums& sums, std::uint64_t& rays) {
   for (int y = tile.y0; y < tile.y1; ++y)
     for (int x = tile.x0; x < tile.x1; ++x) {
       const std::uint32_t pixel = std::uint32_t(y) * std::uint32_t(job.width) + std::uint32_t(x);
-      glm::dvec3 radiance(0.0), squared(0.0), indirect(0.0);
-      for (int s = 0; s < job.spp; ++s) {
-        SampleStream random(job.seed, pixel, job.first_sample + std::uint32_t(s), job.sampler);
-        const glm::vec2 jitter = random.next_2d();
-        const scene::Ray ray = scene::ray_through_pixel(camera, job.width, job.height, float(x) + jitter.x,
-                                                        float(y) + jitter.y);
-        const PathSample sample = tracer.trace(ray, random);
-        const glm::dvec3 value(sample.radiance);
-        radiance += value;
-        squared += value * value;
-        indirect += glm::dvec3(sample.indirect);
-        rays += sample.rays;
-      }
-      sums.radiance[pixel] = radiance;
-      sums.radiance_squared[pixel] = squared;
-      sums.indirect[pixel] = indirect;
+      SampleStream random(job.seed, pixel, sample, job.sampler);
+      const glm::vec2 jitter = random.next_2d();
+      const scene::Ray ray = scene::ray_through_pixel(camera, job.width, job.height, float(x) + jitter.x,
+                                                      float(y) + jitter.y);
+      const PathSample path = tracer.trace(ray, random);
+      const glm::dvec3 value(path.radiance);
+      sums.radiance[pixel] += value;
+      sums.radiance_squared[pixel] += value * value;
+      sums.indirect[pixel] += glm::dvec3(path.indirect);
+      rays += path.rays;
     }
 }
+
+Status check_job(const RenderJob& job) {
+  if (job.width < 1 || job.height < 1) return make_error("render: image size must be at least 1x1");
+  if (job.spp < 1) return make_error("render: spp must be at least 1");
+  if (job.tile_size < 1) return make_error("render: tile size must be at least 1");
+  const std::size_t pixels = std::size_t(job.width) * std::size_t(job.height);
+  if (pixels > (std::size_t(1) << 32)) return make_error("render: image too large for 32-bit pixel indices");
+  return {};
+}
+
+bool stopped(const RenderJob& job) { return job.stop != nullptr && *job.stop != 0; }
 
 }  // namespace
 
@@ -67,76 +73,92 @@ Status SampleSums::merge(const SampleSums& other) {
   return {};
 }
 
-Result<SampleSums> render_samples(const PathTracer& tracer, const scene::CameraState& camera, const RenderJob& job,
-                                  RenderStats* stats, const ProgressCallback& progress, double progress_interval_s) {
-  if (job.width < 1 || job.height < 1) return make_error("render: image size must be at least 1x1");
-  if (job.spp < 1) return make_error("render: spp must be at least 1");
-  if (job.tile_size < 1) return make_error("render: tile size must be at least 1");
+Status accumulate_samples(const PathTracer& tracer, const scene::CameraState& camera, const RenderJob& job,
+                          SampleSums& sums, RenderStats* stats, const ProgressCallback& progress, double progress_interval_s) {
+  if (Status valid = check_job(job); !valid) return valid;
   const std::size_t pixels = std::size_t(job.width) * std::size_t(job.height);
-  if (pixels > (std::size_t(1) << 32)) return make_error("render: image too large for 32-bit pixel indices");
-
-  SampleSums sums;
-  sums.width = job.width;
-  sums.height = job.height;
-  sums.samples = std::uint32_t(job.spp);
-  sums.radiance.assign(pixels, glm::dvec3(0.0));
-  sums.radiance_squared.assign(pixels, glm::dvec3(0.0));
-  sums.indirect.assign(pixels, glm::dvec3(0.0));
+  if (sums.width != job.width || sums.height != job.height || sums.radiance.size() != pixels ||
+      sums.radiance_squared.size() != pixels || sums.indirect.size() != pixels)
+    return make_error("render: the sums to accumulate into are " + std::to_string(sums.width) + "x" +
+                      std::to_string(sums.height) + ", the job is " + std::to_string(job.width) + "x" +
+                      std::to_string(job.height));
 
   const std::vector<Tile> tiles = make_tiles(job.width, job.height, job.tile_size);
+  const int tiles_per_round = int(tiles.size());
   const int thread_count = std::max(1, job.threads > 0 ? job.threads : int(std::thread::hardware_concurrency()));
-  std::atomic<std::size_t> next_tile{0};
   std::atomic<std::uint64_t> total_rays{0};
-  std::mutex mutex;
-  std::condition_variable tile_finished;
-  int tiles_done = 0;
-
   const Clock::time_point start = Clock::now();
-  auto worker = [&] {
-    for (std::size_t t = next_tile++; t < tiles.size(); t = next_tile++) {
-      std::uint64_t rays = 0;
-      render_tile(tracer, camera, job, tiles[t], sums, rays);
-      total_rays += rays;
-      {
-        const std::lock_guard<std::mutex> lock(mutex);
-        ++tiles_done;
-      }
-      tile_finished.notify_one();
-    }
-  };
-  std::vector<std::thread> threads;
-  for (int i = 0; i < thread_count; ++i) threads.emplace_back(worker);
-
-  auto report = [&](int done) {
+  std::uint32_t rounds_done = 0;
+  auto report = [&](int tiles_done) {
     if (!progress) return;
     RenderProgress p;
-    p.tiles_done = done;
-    p.tiles_total = int(tiles.size());
+    p.tiles_done = tiles_done;
+    p.tiles_total = tiles_per_round * job.spp;
+    p.samples_done = rounds_done;
     p.elapsed_s = seconds_since(start);
-    p.eta_s = done > 0 ? p.elapsed_s * double(p.tiles_total - done) / double(done) : 0.0;
+    p.eta_s = tiles_done > 0 ? p.elapsed_s * double(p.tiles_total - tiles_done) / double(tiles_done) : 0.0;
     p.rays = total_rays.load();
     progress(p);
   };
-  {
-    std::unique_lock<std::mutex> lock(mutex);
-    Clock::time_point last_report = start;
-    while (tiles_done < int(tiles.size())) {
-      tile_finished.wait_for(lock, std::chrono::milliseconds(100));
-      if (seconds_since(last_report) >= progress_interval_s && tiles_done < int(tiles.size())) {
-        const int done = tiles_done;
-        lock.unlock();
-        report(done);
-        lock.lock();
-        last_report = Clock::now();
+
+  Clock::time_point last_report = start;
+  for (int round = 0; round < job.spp && !stopped(job); ++round) {
+    const std::uint32_t sample = job.first_sample + std::uint32_t(round);
+    std::atomic<std::size_t> next_tile{0};
+    std::mutex mutex;
+    std::condition_variable tile_finished;
+    int tiles_done = 0;
+    auto worker = [&] {
+      for (std::size_t t = next_tile++; t < tiles.size(); t = next_tile++) {
+        std::uint64_t rays = 0;
+        render_tile(tracer, camera, job, sample, tiles[t], sums, rays);
+        total_rays += rays;
+        {
+          const std::lock_guard<std::mutex> lock(mutex);
+          ++tiles_done;
+        }
+        tile_finished.notify_one();
+      }
+    };
+    std::vector<std::thread> threads;
+    for (int i = 0; i < std::min(thread_count, tiles_per_round); ++i) threads.emplace_back(worker);
+    {
+      std::unique_lock<std::mutex> lock(mutex);
+      while (tiles_done < tiles_per_round) {
+        tile_finished.wait_for(lock, std::chrono::milliseconds(100));
+        if (seconds_since(last_report) >= progress_interval_s && tiles_done < tiles_per_round) {
+          const int done = round * tiles_per_round + tiles_done;
+          lock.unlock();
+          report(done);
+          lock.lock();
+          last_report = Clock::now();
+        }
       }
     }
+    for (std::thread& thread : threads) thread.join();
+    ++rounds_done;
+    ++sums.samples;
+    report((round + 1) * tiles_per_round);
+    last_report = Clock::now();
   }
-  for (std::thread& thread : threads) thread.join();
-  report(int(tiles.size()));
   if (stats) {
     stats->rays = total_rays.load();
     stats->seconds = seconds_since(start);
   }
+  return {};
+}
+
+Result<SampleSums> render_samples(const PathTracer& tracer, const scene::CameraState& camera, const RenderJob& job,
+                                  RenderStats* stats, const ProgressCallback& progress, double progress_interval_s) {
+  if (Status valid = check_job(job); !valid) return valid.error();
+  SampleSums sums;
+  sums.width = job.width;
+  sums.height = job.height;
+  const std::size_t pixels = std::size_t(job.width) * std::size_t(job.height);
+  sums.radiance.assign(pixels, glm::dvec3(0.0));
+  sums.radiance_squared.assign(pixels, glm::dvec3(0.0));
+  sums.indirect.assign(pixels, glm::dvec3(0.0));
+  if (Status s = accumulate_samples(tracer, camera, job, sums, stats, progress, progress_interval_s); !s) return s.error();
   return sums;
 }
 

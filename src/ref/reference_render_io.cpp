@@ -1,12 +1,16 @@
 #include "ref/reference_render_io.h"
 
+#include <algorithm>
+#include <cstring>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "base/atomic_file.h"
 #include "ref/guided_filter.h"
+#include "settings/limits.h"
 
 namespace proxygi::ref {
 namespace {
@@ -22,9 +26,12 @@ nlohmann::json to_json(const ReferenceRecord& r) {
   return {{"scene", r.scene},       {"frame", r.frame},         {"time_s", r.time_s},
           {"width", r.width},       {"height", r.height},       {"transport", r.transport},
           {"lighting", r.lighting}, {"sh_order", r.sh_order},   {"seed", r.seed},
-          {"sampler", r.sampler},   {"samples", r.samples},   {"guided_filter", r.guided_filter},
-          {"seconds", r.seconds},   {"rays", r.rays}};
+          {"sampler", r.sampler},   {"samples", r.samples},   {"target_samples", std::max(r.target_samples, r.samples)},
+          {"guided_filter", r.guided_filter}, {"seconds", r.seconds}, {"rays", r.rays}};
 }
+
+constexpr std::string_view kPartialMagic = "proxygi-sums 1\n";
+static_assert(sizeof(glm::dvec3) == 3 * sizeof(double), "OUT.partial stores dvec3 as three doubles");
 
 }  // namespace
 
@@ -40,6 +47,7 @@ ReferencePaths reference_paths(const std::filesystem::path& output) {
   p.mask = sibling(output, ".mask.exr");
   p.character = sibling(output, ".character.exr");
   p.record = sibling(output, ".json");
+  p.partial = sibling(output, ".partial");
   return p;
 }
 
@@ -60,6 +68,7 @@ Result<ReferenceRecord> read_record(const std::filesystem::path& path) {
     r.seed = j.at("seed").get<std::uint32_t>();
     r.sampler = j.value("sampler", std::string("random"));
     r.samples = j.at("samples").get<std::uint32_t>();
+    r.target_samples = j.value("target_samples", r.samples);
     r.guided_filter = j.at("guided_filter").get<bool>();
     r.seconds = j.at("seconds").get<double>();
     r.rays = j.at("rays").get<std::uint64_t>();
@@ -85,7 +94,59 @@ std::string record_mismatch(const ReferenceRecord& previous, const ReferenceReco
   return {};
 }
 
+Status write_partial_sums(const std::filesystem::path& path, const SampleSums& sums) {
+  std::vector<std::uint8_t> bytes(kPartialMagic.begin(), kPartialMagic.end());
+  auto put = [&bytes](const void* data, std::size_t size) {
+    const auto* begin = static_cast<const std::uint8_t*>(data);
+    bytes.insert(bytes.end(), begin, begin + size);
+  };
+  const std::uint32_t header[3] = {std::uint32_t(sums.width), std::uint32_t(sums.height), sums.samples};
+  put(header, sizeof header);
+  for (std::size_t i = 0; i < sums.radiance.size(); ++i) {
+    put(&sums.radiance[i], sizeof(glm::dvec3));
+    put(&sums.radiance_squared[i], sizeof(glm::dvec3));
+    put(&sums.indirect[i], sizeof(glm::dvec3));
+  }
+  return write_file_atomically(path, bytes);
+}
+
+Result<SampleSums> read_partial_sums(const std::filesystem::path& path) {
+  constexpr std::uint64_t kMaxPixels = std::uint64_t(settings::kMaxImageSize) * settings::kMaxImageSize;
+  auto bytes = read_file(path, kPartialMagic.size() + 12 + kMaxPixels * 9 * sizeof(double));
+  if (!bytes) return bytes.error();
+  const std::size_t header = kPartialMagic.size() + 12;
+  if (bytes->size() < header || std::string_view(reinterpret_cast<const char*>(bytes->data()), kPartialMagic.size()) != kPartialMagic)
+    return make_error(path.string() + ": not a proxygi sample-sums file");
+  std::uint32_t fields[3];
+  std::memcpy(fields, bytes->data() + kPartialMagic.size(), sizeof fields);
+  SampleSums sums;
+  sums.width = int(fields[0]);
+  sums.height = int(fields[1]);
+  sums.samples = fields[2];
+  const std::uint64_t pixels = std::uint64_t(fields[0]) * fields[1];
+  if (fields[0] > std::uint32_t(settings::kMaxImageSize) || fields[1] > std::uint32_t(settings::kMaxImageSize) ||
+      bytes->size() != header + pixels * 9 * sizeof(double))
+    return make_error(path.string() + ": truncated or of another size (" + std::to_string(fields[0]) + "x" +
+                      std::to_string(fields[1]) + ")");
+  sums.radiance.resize(pixels);
+  sums.radiance_squared.resize(pixels);
+  sums.indirect.resize(pixels);
+  const std::uint8_t* at = bytes->data() + header;
+  for (std::size_t i = 0; i < pixels; ++i) {
+    std::memcpy(&sums.radiance[i], at, sizeof(glm::dvec3)), at += sizeof(glm::dvec3);
+    std::memcpy(&sums.radiance_squared[i], at, sizeof(glm::dvec3)), at += sizeof(glm::dvec3);
+    std::memcpy(&sums.indirect[i], at, sizeof(glm::dvec3)), at += sizeof(glm::dvec3);
+  }
+  return sums;
+}
+
 Result<SampleSums> read_previous_sums(const ReferencePaths& paths, const ReferenceRecord& record) {
+  std::error_code missing;
+  if (std::filesystem::exists(paths.partial, missing)) {
+    auto exact = read_partial_sums(paths.partial);
+    if (!exact) return exact.error();
+    if (exact->samples == record.samples && exact->width == record.width && exact->height == record.height) return exact;
+  }
   ReferenceImages images;
   const std::filesystem::path& mean_path = record.guided_filter ? paths.unfiltered : paths.radiance;
   auto radiance = image::read_image(mean_path);

@@ -17,6 +17,9 @@
 //                      character, else 0; a = 1 (the "character" region without its silhouette:
 //                      `proxygi compare --mask OUT.character.exr`).
 //   OUT.json           the record below: what was rendered, with how many samples.
+//   OUT.partial        only while a run is unfinished (interrupted, e.g. Ctrl-C): the exact
+//                      double sums of its whole samples, so that `--accumulate` continues them to
+//                      the same bits an uninterrupted run gives. Removed when the run completes.
 // Every file is written atomically.
 #include <cstdint>
 #include <filesystem>
@@ -29,7 +32,7 @@
 namespace proxygi::ref {
 
 struct ReferencePaths {
-  std::filesystem::path radiance, unfiltered, indirect, variance, albedo, normal, depth, mask, character, record;
+  std::filesystem::path radiance, unfiltered, indirect, variance, albedo, normal, depth, mask, character, record, partial;
 };
 ReferencePaths reference_paths(const std::filesystem::path& output);
 
@@ -46,6 +49,7 @@ struct ReferenceRecord {
   std::uint32_t seed = 0;
   std::string sampler = "sobol";  // ref::sampler_name; records without it were made by "random"
   std::uint32_t samples = 0;  // per pixel, all runs together
+  std::uint32_t target_samples = 0;  // what the run was asked to reach; > samples while unfinished
   bool guided_filter = false;
   double seconds = 0.0;   // tracing time, all runs together
   std::uint64_t rays = 0; // all runs together
@@ -55,9 +59,15 @@ Result<ReferenceRecord> read_record(const std::filesystem::path& path);
 // Empty when `previous` describes the same image as `current`, else what differs.
 std::string record_mismatch(const ReferenceRecord& previous, const ReferenceRecord& current);
 
-// The sums of a previous run, read back from its radiance (or unfiltered), indirect and
-// variance EXRs and its record.
+// The sums of a previous run: exactly from OUT.partial when it holds record.samples samples,
+// else read back (to float precision) from its radiance (or unfiltered), indirect and variance
+// EXRs and its record.
 Result<SampleSums> read_previous_sums(const ReferencePaths& paths, const ReferenceRecord& record);
+
+// OUT.partial: "proxygi-sums 1\n", then width, height, samples (uint32, little-endian as the
+// machine), then per pixel radiance, radiance², indirect (9 doubles).
+Status write_partial_sums(const std::filesystem::path& path, const SampleSums& sums);
+Result<SampleSums> read_partial_sums(const std::filesystem::path& path);
 
 struct GuidedFilterSettings {
   int radius = 24;

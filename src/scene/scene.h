@@ -113,7 +113,7 @@ struct Character {
   // Fit settings of the cached rig (proxies/fit.h FitOptions; defaults 0.05 and 96). A rig named
   // in `proxies` is used as it was made, whatever these say.
   std::optional<float> proxy_tolerance;  // relative to the bind-pose diagonal, (0, 1]
-  std::optional<int> proxy_max_spheres;  // [1, 4096]
+  std::optional<int> proxy_max_spheres;  // [1, settings::kMaxProxySpheres]
   std::optional<WalkPath> path;
   // Schema version 2: clip segments over scene time. When non-empty it replaces clip, speed and
   // time_offset (which the file may then not give).
@@ -156,6 +156,12 @@ struct Environment {
   float rotation_degrees = 0.0f;
   bool operator==(const Environment&) const = default;
 };
+
+// The ground of the built-in scenes and of every scene file without ground.size: 2 km, seen up
+// to a far plane of 1.5 km (unless the file gives camera.far), so it meets the horizon: no edge
+// and no band of the sky's below-horizon colour. Scenes built in code keep Ground's 20 m.
+inline constexpr float kHorizonGroundSize = 2000.0f;  // meters, edge length
+inline constexpr float kHorizonFarM = 1500.0f;        // meters, camera far plane
 
 // A square in the y = 0 plane centered at the origin.
 struct Ground {
@@ -240,11 +246,11 @@ enum class OutputFormat { png, exr, mp4 };
 
 // Frame f (first_frame <= f < first_frame + frame_count) shows scene time f / fps.
 struct Output {
-  int width = 512;    // pixels, 16..8192
-  int height = 512;   // pixels, 16..8192
+  int width = 512;    // pixels, settings::kMinImageSize..kMaxImageSize
+  int height = 512;   // pixels, settings::kMinImageSize..kMaxImageSize
   double fps = 24.0;  // frames per second, (0, 1000]
   int first_frame = 0;   // >= 0
-  int frame_count = 96;  // >= 1; the file may give "last" (inclusive) instead
+  int frame_count = 96;  // 1..settings::kMaxFrameCount; the file may give "last" (inclusive) instead
   std::vector<OutputFormat> formats{OutputFormat::png};  // non-empty, no repeats
   bool operator==(const Output&) const = default;
 };

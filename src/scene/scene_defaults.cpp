@@ -25,9 +25,9 @@ Environment daylight() {
 // The parts both built-ins share: a 2 km ground reaching the horizon, a far plane beyond it,
 // and 512×512 at 24 fps from frame 0.
 void set_outdoor_stage(Scene& scene, int frame_count) {
-  scene.ground = Ground{true, 2000.0f, glm::vec3(0.8f, 0.8f, 0.8f)};
+  scene.ground = Ground{true, kHorizonGroundSize, glm::vec3(0.8f, 0.8f, 0.8f)};
   scene.camera.near_m = 0.1f;
-  scene.camera.far_m = 1500.0f;  // beyond the ground edge, so the ground meets the horizon
+  scene.camera.far_m = kHorizonFarM;  // beyond the ground edge, so the ground meets the horizon
   scene.output.width = 512;
   scene.output.height = 512;
   scene.output.fps = 24.0;

@@ -146,9 +146,9 @@ Environment read_environment(const json& value, const std::string& path) {
   return e;
 }
 
-Ground read_ground(const json& value, const std::string& path) {
+Ground read_ground(const json& value, const std::string& path, const Ground& defaults) {
   ObjectReader r(value, path);
-  Ground g;
+  Ground g = defaults;
   g.enabled = r.boolean("enabled", g.enabled);
   g.size = r.number("size", g.size);
   g.albedo = r.vec3("albedo", g.albedo);
@@ -177,9 +177,10 @@ CameraKey read_camera_key(const json& value, const std::string& path) {
   return k;
 }
 
-Camera read_camera(const json& value, const std::string& path) {
+Camera read_camera(const json& value, const std::string& path, float default_far_m) {
   ObjectReader r(value, path);
   Camera c;
+  c.far_m = default_far_m;
   // No "type": a fixed camera (README, "Scene files").
   const std::string type = r.has("type") ? detail::read_string(*r.get("type"), r.field("type")) : std::string("fixed");
   c.near_m = r.number("near", c.near_m);
@@ -316,14 +317,21 @@ Scene read_scene(const json& document) {
     }
   }
   if (const json* e = r.get("environment")) scene.environment = read_environment(*e, "environment");
-  if (const json* g = r.get("ground")) scene.ground = read_ground(*g, "ground");
+  // Without ground.size the ground reaches the horizon, as in the built-in scenes, and without
+  // camera.far the far plane lies beyond its edge; a file that sizes its ground keeps the far
+  // plane of Camera's default.
+  const json* ground = r.get("ground");
+  const bool sized_ground = ground != nullptr && ground->is_object() && ground->contains("size");
+  scene.ground.size = kHorizonGroundSize;
+  if (ground) scene.ground = read_ground(*ground, "ground", scene.ground);
+  scene.camera.far_m = sized_ground ? Camera{}.far_m : kHorizonFarM;
   if (const json* meshes = r.get("static_meshes")) {
     detail::expect_array(*meshes, "static_meshes");
     for (std::size_t i = 0; i < meshes->size(); ++i) {
       scene.static_meshes.push_back(read_static_mesh((*meshes)[i], detail::index_path("static_meshes", i)));
     }
   }
-  if (const json* c = r.get("camera")) scene.camera = read_camera(*c, "camera");
+  if (const json* c = r.get("camera")) scene.camera = read_camera(*c, "camera", scene.camera.far_m);
   if (const json* s = r.get("render")) scene.render = read_render(*s, "render");
   if (const json* o = r.get("output")) scene.output = read_output(*o, "output");
   r.finish();

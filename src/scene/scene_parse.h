@@ -15,11 +15,13 @@
 
 #include "base/result.h"
 #include "scene/scene.h"
+#include "settings/limits.h"
 
 namespace proxygi::scene {
 
-// Largest scene file load_scene reads; scenes are small, this guards against wrong paths.
-inline constexpr std::uint64_t kMaxSceneFileBytes = 16u << 20;
+// Largest scene file load_scene reads (settings/limits.h); scenes are small, this guards
+// against wrong paths.
+inline constexpr std::uint64_t kMaxSceneFileBytes = settings::kMaxSceneFileBytes;
 
 // Parses and validates scene JSON. `scene_file` names the file in messages and its parent
 // folder becomes Scene::base_dir (it is not opened).

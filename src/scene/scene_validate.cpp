@@ -9,6 +9,7 @@
 
 #include "scene/json_reader.h"
 #include "settings/fields.h"
+#include "settings/limits.h"
 #include "scene/scene_names.h"
 
 namespace proxygi::scene {
@@ -138,8 +139,9 @@ void validate_character(const Character& c, const std::string& path) {
   if (c.proxies) non_empty(*c.proxies, join_path(path, "proxies"));
   if (c.proxy_tolerance && !(*c.proxy_tolerance > 0.0f && *c.proxy_tolerance <= 1.0f))
     fail(join_path(path, "proxy_tolerance"), "must be in (0, 1] (got " + show(*c.proxy_tolerance) + ")");
-  if (c.proxy_max_spheres && (*c.proxy_max_spheres < 1 || *c.proxy_max_spheres > 4096))
-    fail(join_path(path, "proxy_max_spheres"), "must be in [1, 4096] (got " + std::to_string(*c.proxy_max_spheres) + ")");
+  if (c.proxy_max_spheres && (*c.proxy_max_spheres < 1 || *c.proxy_max_spheres > settings::kMaxProxySpheres))
+    fail(join_path(path, "proxy_max_spheres"),
+         "must be in [1, " + std::to_string(settings::kMaxProxySpheres) + "] (got " + std::to_string(*c.proxy_max_spheres) + ")");
   if (c.path) {
     const std::string p = join_path(path, "path");
     finite(c.path->start, join_path(p, "start"));
@@ -238,15 +240,18 @@ void validate_render(const settings::RenderSettings& r) {
 }
 
 void validate_output(const Output& o) {
-  if (o.width < 16 || o.width > 8192) fail("output.width", "must be in 16..8192 (got " + std::to_string(o.width) + ")");
-  if (o.height < 16 || o.height > 8192) {
-    fail("output.height", "must be in 16..8192 (got " + std::to_string(o.height) + ")");
+  using settings::kMaxImageSize, settings::kMinImageSize;
+  const std::string sizes = std::to_string(kMinImageSize) + ".." + std::to_string(kMaxImageSize);
+  if (o.width < kMinImageSize || o.width > kMaxImageSize) fail("output.width", "must be in " + sizes + " (got " + std::to_string(o.width) + ")");
+  if (o.height < kMinImageSize || o.height > kMaxImageSize) {
+    fail("output.height", "must be in " + sizes + " (got " + std::to_string(o.height) + ")");
   }
   if (!std::isfinite(o.fps) || !(o.fps > 0.0) || o.fps > 1000.0) {
     fail("output.fps", "must be in (0, 1000] (got " + show(o.fps) + ")");
   }
   if (o.first_frame < 0) fail("output.frames.first", "must be >= 0 (got " + std::to_string(o.first_frame) + ")");
-  if (o.frame_count < 1) fail("output.frames.count", "must be >= 1 (got " + std::to_string(o.frame_count) + ")");
+  if (o.frame_count < 1 || o.frame_count > settings::kMaxFrameCount)
+    fail("output.frames.count", "must be in 1.." + std::to_string(settings::kMaxFrameCount) + " (got " + std::to_string(o.frame_count) + ")");
   if (o.frame_count > std::numeric_limits<int>::max() - o.first_frame) {
     fail("output.frames.count", "first + count overflows");
   }

@@ -8,7 +8,7 @@
 //  - follow camera: character index in range; keyframes: at least one, times strictly increasing
 //  - walk path: start != end, speed > 0
 //  - environment map path ends in .hdr or .exr; model paths non-empty
-//  - output: width and height 16..8192, fps in (0, 1000], first frame >= 0, count >= 1,
+//  - output: width and height and frame count within settings/limits.h, fps in (0, 1000], first frame >= 0,
 //    formats non-empty without repeats
 #include "base/result.h"
 #include "scene/scene.h"

@@ -1,12 +1,14 @@
 // Writes the mannequin three ways with the glTF writer, for the CLI checks of own characters
 // (own_character_check.cmake): DIR/named.glb (as built), DIR/unnamed.glb (every node name empty)
-// and DIR/duplicate.glb (left_/right_ prefixes dropped, so both sides share names; the rest "bone").
+// and DIR/duplicate.glb (left_/right_ prefixes dropped, so both sides share names; the rest "bone");
+// and DIR/defects.glb with DIR/defects.expected for `info --validate` (write_defects.h).
 #include <cstdio>
 #include <filesystem>
 #include <string>
 
 #include "anim/gltf_writer.h"
 #include "anim/mannequin.h"
+#include "tests/cli/write_defects.h"
 
 int main(int argc, char** argv) {
   if (argc != 2) {
@@ -29,5 +31,9 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "%s\n", written.message().c_str());
       return 1;
     }
+  if (const std::string failed = write_defects(dir); !failed.empty()) {
+    std::fprintf(stderr, "defects.glb: %s\n", failed.c_str());
+    return 1;
+  }
   return 0;
 }

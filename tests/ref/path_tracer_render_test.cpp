@@ -2,6 +2,7 @@
 // agreement of the path tracer's pixels with the rasterizer's projection, and the scene's
 // geometry at a frame.
 #include <algorithm>
+#include <csignal>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -111,6 +112,48 @@ TEST_F(PathTracerRender, SplitSampleRangesMergeIntoOneRun) {
     EXPECT_NEAR(again.radiance.pixels[i].g, original.radiance.pixels[i].g, 1e-6f * (1.0f + original.radiance.pixels[i].g));
     EXPECT_NEAR(again.variance.pixels[i].g, original.variance.pixels[i].g, 1e-4f * (1e-3f + original.variance.pixels[i].g));
   }
+}
+
+// Stopping (the SIGINT flag) after whole rounds and continuing from the kept sums gives the
+// same doubles as one uninterrupted run: what `reference` Ctrl-C + --accumulate relies on.
+TEST_F(PathTracerRender, StoppedRunContinuesToTheSameBits) {
+  RenderJob job;
+  job.width = 16;
+  job.height = 12;
+  job.seed = 5;
+  job.spp = 5;
+  job.tile_size = 5;
+  const SampleSums whole = render(job);
+
+  volatile std::sig_atomic_t stop = 0;
+  job.stop = &stop;
+  SampleSums kept;
+  kept.width = job.width;
+  kept.height = job.height;
+  kept.radiance.assign(std::size_t(job.width * job.height), glm::dvec3(0.0));
+  kept.radiance_squared = kept.indirect = kept.radiance;
+  std::uint32_t reported = 0;
+  auto stop_after_two = [&](const RenderProgress& p) {
+    reported = p.samples_done;
+    if (p.samples_done == 2) stop = 1;
+  };
+  ASSERT_TRUE(accumulate_samples(tracer_, camera_, job, kept, nullptr, stop_after_two).ok());
+  EXPECT_EQ(kept.samples, 2u);
+  EXPECT_EQ(reported, 2u);
+  EXPECT_FALSE(same_bits(kept, whole));
+
+  stop = 0;
+  job.first_sample = kept.samples;
+  job.spp = 3;
+  job.threads = 3;  // another thread count: still the same bits
+  ASSERT_TRUE(accumulate_samples(tracer_, camera_, job, kept).ok());
+  EXPECT_TRUE(same_bits(kept, whole));
+
+  // A flag already raised traces nothing.
+  stop = 1;
+  SampleSums untouched = kept;
+  ASSERT_TRUE(accumulate_samples(tracer_, camera_, job, untouched).ok());
+  EXPECT_TRUE(same_bits(untouched, kept));
 }
 
 TEST_F(PathTracerRender, PixelsSeeWhatTheRasterizerProjectsThere) {

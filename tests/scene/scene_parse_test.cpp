@@ -158,6 +158,9 @@ TEST(SceneParse, EveryFieldOfTheFullScene) {
 TEST(SceneParse, MinimalSceneTakesEveryDefault) {
   Scene expected;
   expected.base_dir = "shots";
+  // A file without ground.size gets the ground reaching the horizon and the far plane beyond it.
+  expected.ground.size = kHorizonGroundSize;
+  expected.camera.far_m = kHorizonFarM;
   EXPECT_EQ(parse_ok(R"({"schema_version": 1})"), expected);
   // The documented defaults.
   EXPECT_EQ(expected.render.sh_order, 4);

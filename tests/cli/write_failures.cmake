@@ -1,0 +1,60 @@
+# Every command that writes a file, pointed at a folder it may not write to: each must fail
+# with exit 1 and a message naming the user's path, never the temporary file ("NAME.tmp-PID",
+# base/atomic_file.h) that the write went through. Runs as the user nobody when the tests run
+# as root (root writes anywhere). Nothing reaches a GPU.
+#   -DPROXYGI=<binary> -DWORK=<scratch folder>
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK}/ro/record ${WORK}/images)
+set(as_user "")
+execute_process(COMMAND id -u OUTPUT_VARIABLE uid OUTPUT_STRIP_TRAILING_WHITESPACE)
+if(uid STREQUAL "0")
+  find_program(SETPRIV setpriv)
+  if(NOT SETPRIV)
+    message(WARNING "write failure checks skipped: running as root without setpriv to drop to nobody")
+    return()
+  endif()
+  set(as_user ${SETPRIV} --reuid=65534 --regid=65534 --clear-groups)
+  execute_process(COMMAND ${as_user} ${PROXYGI} --version RESULT_VARIABLE code OUTPUT_QUIET ERROR_QUIET)
+  if(NOT code EQUAL 0)
+    message(WARNING "write failure checks skipped: the user nobody cannot run ${PROXYGI} (a folder above it is private)")
+    return()
+  endif()
+  execute_process(COMMAND chown -R 65534:65534 ${WORK}/images)
+endif()
+# An image to compare, written where the user may write.
+execute_process(COMMAND ${as_user} ${PROXYGI} reference default --frame 0 --spp 1 --width 16 --height 16 -o ${WORK}/images/a.exr
+                RESULT_VARIABLE code ERROR_VARIABLE err)
+if(NOT code EQUAL 0)
+  message(FATAL_ERROR "reference into a writable folder failed (${code}): ${err}")
+endif()
+file(CHMOD ${WORK}/ro ${WORK}/ro/record DIRECTORY_PERMISSIONS OWNER_READ OWNER_EXECUTE GROUP_READ GROUP_EXECUTE WORLD_READ WORLD_EXECUTE)
+
+# label | path the message must name | arguments (separated by ~)
+set(cases
+  "fit -o|${WORK}/ro/rig.proxies.json|fit~mannequin~-o~${WORK}/ro/rig.proxies.json"
+  "mannequin -o|${WORK}/ro/m.glb|mannequin~-o~${WORK}/ro/m.glb"
+  "pose -o|${WORK}/ro/pose.obj|pose~mannequin~-o~${WORK}/ro/pose.obj"
+  "reference -o|${WORK}/ro/r.exr|reference~default~--frame~0~--spp~1~--width~16~--height~16~-o~${WORK}/ro/r.exr"
+  "compare --error-image|${WORK}/ro/error.png|compare~${WORK}/images/a.exr~${WORK}/images/a.exr~--error-image~${WORK}/ro/error.png"
+  "record -o|${WORK}/ro/record|record~default~--frames~0:0~--width~16~--height~16~-o~${WORK}/ro/record")
+set(failures "")
+foreach(entry ${cases})
+  string(REPLACE "|" ";" fields "${entry}")
+  list(GET fields 0 label)
+  list(GET fields 1 path)
+  list(GET fields 2 args)
+  string(REPLACE "~" ";" args "${args}")
+  execute_process(COMMAND ${as_user} ${PROXYGI} ${args} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  string(FIND "${err}" "${path}" named)
+  if(NOT code EQUAL 1 OR named EQUAL -1 OR err MATCHES "\\.tmp-" OR out MATCHES "\\.tmp-")
+    set(failures "${failures}\n  ${label}: exit ${code} (expected 1), stderr '${err}' (must name ${path}, no .tmp- file)")
+  endif()
+endforeach()
+file(GLOB left ${WORK}/ro/*.tmp-* ${WORK}/ro/record/*.tmp-*)
+if(left)
+  set(failures "${failures}\n  temporary files left: ${left}")
+endif()
+file(CHMOD ${WORK}/ro ${WORK}/ro/record DIRECTORY_PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
+if(failures)
+  message(FATAL_ERROR "write failures:${failures}")
+endif()
