@@ -15,7 +15,7 @@ Status run_viewer(const ViewerOptions& options) {
   return viewer.run();
 }
 
-Viewer::Viewer(const ViewerOptions& options) : options_(options), loader_(options.assets_dir) {
+Viewer::Viewer(const ViewerOptions& options) : options_(options), loader_(options.assets_dir, options.loader) {
   adaptive_ = options.adaptive_resolution && !options.script;  // scripts are exact: no adaptation
   if (options.script) script_.emplace(*options.script);
 }
@@ -128,7 +128,13 @@ Status Viewer::adopt(Result<LoadedScene> loaded) {
   name_ = loaded->name.empty() ? "default" : loaded->name;
   if (!keep) core_->state().message.clear();
   if (window_) window_->set_title("proxygi — " + name_);
-  log_info("view: showing " + name_);
+  log_info("view: showing " + name_ + (loaded->preview ? " (without proxies while its rigs are fitted)" : ""));
+  if (loaded->preview) {
+    ++previews_;
+  } else if (previews_ > 0 && keep) {
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - options_.started).count();
+    std::fprintf(stderr, "view: proxies of %s on after %.2f s\n", name_.c_str(), seconds);
+  }
   return {};
 }
 

@@ -18,6 +18,7 @@
 #include <string>
 
 #include "base/result.h"
+#include "view/scene_loader.h"
 #include "view/script.h"
 
 namespace proxygi::view {
@@ -43,6 +44,7 @@ struct ViewerOptions {
   std::filesystem::path screenshot_dir = "screenshots";  // F12
   PngWriter write_png;
   std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
+  LoaderOptions loader;              // the preview while rigs are fitted (scene_loader.h)
 };
 
 // Runs until quit (window closed, Esc, script end, max_frames). Errors: no device, no window
