@@ -106,7 +106,11 @@ Status Viewer::render_into(const TargetImage& target) {
                  world_->proxy_count() == 0 && loader_.busy() ? " (without proxies: rigs are being fitted)" : "");
   }
   rendered_last_ = true;
-  if (world_->proxy_count() == 0 && loader_.busy()) ++frames_without_proxies_;
+  if (world_->proxy_count() == 0 && loader_.busy() && ++frames_without_proxies_ >= options_.hold_rigs_frames &&
+      !rig_hold_open_) {
+    rig_hold_open_ = true;
+    rig_hold_.set_value();
+  }
   if (options_.show_ui && core_->state().toggles.ui && core_->state().toggles.hud && !script_ &&
       (want_pass_timing_ || std::chrono::steady_clock::now() - last_pass_timing_ > std::chrono::duration<double>(kPassTimingPeriodS))) {
     want_pass_timing_ = false;

@@ -189,5 +189,32 @@ TEST_F(ViewerOffscreenTest, WireframeKeyDrawsTheTriangleEdges) {
   EXPECT_TRUE(run.state["toggles"]["wireframe"]);
 }
 
+// A model without a cached rig is shown at once without proxies while its rig is fitted (the fit
+// held back until three such frames were drawn), then with them.
+TEST_F(ViewerOffscreenTest, AModelShowsBeforeItsRigFitCompletes) {
+  const auto dir = output_dir("before_fit");
+  std::filesystem::remove(dir / "figure.proxies.json");
+  std::filesystem::copy_file(PROXYGI_SOURCE_DIR "/assets/mannequin.glb", dir / "figure.glb",
+                             std::filesystem::copy_options::overwrite_existing);
+  ViewerOptions options;
+  options.open = (dir / "figure.glb").string();
+  options.assets_dir = PROXYGI_SOURCE_DIR "/assets";
+  options.offscreen = true;
+  options.width = options.height = 64;
+  options.validation = true;
+  options.hold_rigs_frames = 3;
+  options.quit_when_rigged = true;
+  options.state_out = dir / "state.json";
+  ASSERT_TRUE(run_viewer(options).ok());
+  std::ifstream in(options.state_out);
+  const auto state = nlohmann::json::parse(in, nullptr, false);
+  EXPECT_EQ(state["previews"], 1);
+  EXPECT_GE(state["frames_without_proxies"], 3);
+  EXPECT_GT(state["proxies"], 0);
+  EXPECT_GT(state["frames"], state["frames_without_proxies"]);
+  EXPECT_EQ(state["validation_messages"], 0);
+  EXPECT_TRUE(std::filesystem::exists(dir / "figure.proxies.json"));
+}
+
 }  // namespace
 }  // namespace proxygi::view
