@@ -38,6 +38,9 @@ TEST_F(PassTimingTest, TimestampsWhereValidElseFencedCpuTimingsWithTheReason) {
     EXPECT_GE(timed->milliseconds[std::size_t(pass)], 0.0) << frame_pass_name(pass);
     sum += timed->milliseconds[std::size_t(pass)];
   }
+  for (FramePass pass : passes)
+    std::printf("  %-20s %8.3f ms (%s)  %8.3f ms (fenced, one submit each)\n", frame_pass_name(pass),
+                timed->milliseconds[std::size_t(pass)], timed->timestamps ? "timestamps" : "fenced", fenced->milliseconds[std::size_t(pass)]);
   std::printf("pass times from %s: sum %.3f ms, fenced frame %.3f ms %s\n", timed->timestamps ? "GPU timestamps" : "fenced CPU",
               sum, timed->frame_fenced_ms, timed->note.c_str());
   if (timed->timestamps) {
