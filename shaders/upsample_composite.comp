@@ -8,6 +8,9 @@
 // elsewhere; HDR linear out and tonemapped sRGB 8-bit out (packed RGBA8).
 // Vertex method (frame.composite_mode == kCompositeDisplayIrradiance): step 7 is the rasterizer's
 // interpolation of the vertex irradiance, which the G-buffer's second target already holds.
+// The viewer's views (frame.debug_view, layouts.h kDebugView*) show an input instead: the
+// direct and indirect buffers upsampled with the same taps (so they sum to the final frame), the
+// visibility DC, or the shadow pass's per-tile list lengths as a heat map.
 // CPU twins: render::upsample, render::tonemap and image::linear_to_srgb.
 #extension GL_GOOGLE_include_directive : require
 #include "frame_common.glsl"
