@@ -95,6 +95,10 @@ Status Viewer::init() {
 
   loader_.open(options_.open, nullptr);
   if (script_) {
+    if (!rig_hold_open_) {  // a script waits for the rigs: no hold
+      rig_hold_open_ = true;
+      rig_hold_.set_value();
+    }
     // Nothing to show until the scene is there (rigs included); a failing first scene is an error.
     if (Status s = adopt(*loader_.wait()); !s) return s;
   }

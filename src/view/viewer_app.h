@@ -46,7 +46,7 @@ struct ViewerOptions {
   std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
   LoaderOptions loader;              // the preview while rigs are fitted (scene_loader.h)
   // Tests: the first open's rig step waits until this many frames were drawn without proxies
-  // (a fit that is slow on demand); 0: no wait.
+  // (a fit that is slow on demand); 0: no wait. Ignored with a script (it waits for the rigs).
   int hold_rigs_frames = 0;
   // Quit at the first frame drawn with proxies after the scene was shown without them.
   bool quit_when_rigged = false;
