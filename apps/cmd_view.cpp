@@ -1,4 +1,4 @@
-// proxygi view [SCENE.json | MODEL.glb | MODEL.gltf | default | crowd] [--offscreen] [--script FILE.json]
+// proxygi view [SCENE.json | MODEL.glb | MODEL.gltf | mannequin | default | crowd] [--offscreen] [--script FILE.json]
 //              [--width W --height H] [--no-vsync] [--no-adaptive] [--no-ui] [--play] [--validation]
 //              [--max-frames N] [--state-out FILE.json] [--device NAME|INDEX]
 // The interactive viewer (src/view): a window with the frame, its HUD and live settings, or an
@@ -59,7 +59,7 @@ void add_view_command(CLI::App& app, CommandRunner& runner) {
   const auto started = std::chrono::steady_clock::now();
   CLI::App* command = app.add_subcommand(
       "view", "Interactive viewer: play, scrub and orbit a scene or model with live settings (F1: keys)");
-  command->add_option("scene", args->open, "scene .json, model .glb/.gltf, \"default\" or \"crowd\" (default: default)");
+  command->add_option("scene", args->open, "scene .json, model .glb/.gltf or 'mannequin' (on record's stage), 'default' or 'crowd' (default: default)");
   command->add_option("--script", args->script, "run time-stamped events from FILE.json on a fixed time step");
   command->add_flag("--offscreen", args->offscreen, "render into an image instead of a window (no display needed)");
   command->add_option("--width", args->width, "window / image width")->check(CLI::Range(16, 8192));

@@ -5,13 +5,11 @@
 #include "anim/mannequin.h"
 #include "apps/commands.h"
 #include "proxies/rig_file.h"
+#include "scene/scene.h"
 
 namespace proxygi::app {
 
-bool names_the_mannequin(const std::string& argument) {
-  std::error_code error;
-  return (argument == "mannequin" || argument == "builtin:mannequin") && !std::filesystem::exists(argument, error);
-}
+bool names_the_mannequin(const std::string& argument) { return scene::names_the_mannequin(argument); }
 
 Result<ModelInput> open_model(const std::string& argument) {
   ModelInput out;

@@ -28,6 +28,7 @@ layout(std430, set = 0, binding = kAoBindLightingCube) readonly buffer LightingC
 layout(std430, set = 0, binding = kAoBindDirect) writeonly buffer Direct { vec4 direct[]; };
 layout(std430, set = 0, binding = kAoBindIndirect) writeonly buffer Indirect { vec4 indirect[]; };
 layout(std430, set = 0, binding = kAoBindShaded) writeonly buffer Shaded { vec4 shaded[]; };
+layout(std430, set = 0, binding = kAoBindTileCounts) writeonly buffer TileCounts { uint tile_list_lengths[]; };  // the heat map
 
 #include "lighting_cube.glsl"
 
@@ -51,6 +52,7 @@ void main() {
   bool valid = inside && r.position_depth.w > 0.0;
   vec3 p = r.position_depth.xyz;
   TILE_CULL(proxy_center_radius, frame.proxy_count, frame.shadow_eta, p, valid);
+  if (gl_LocalInvocationIndex == 0u) tile_list_lengths[gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x] = tile_proxy_count;
   if (!inside) return;
   indirect[index] = vec4(0.0);
   if (!valid) {

@@ -1,7 +1,7 @@
 #version 460
 // Shadow accumulation (frame step 4), the compute-gather variant with tiled culling: every
 // receiver loops over the proxies its 8×8 tile kept (per-proxy data in a uniform buffer, as rendering-notes §6 recommends on lavapipe) and
-// sums f = Σ_i rot(O_log(s_i), d_i). The coverage oracle is the faded table: s ≤ 1/η gives 0
+// sums f = Σ_i rot(O_log(s_i), d_i); each tile's list length goes to TileCounts (the heat map). The coverage oracle is the faded table: s ≤ 1/η gives 0
 // and is skipped before any SH work. CPU twin: render::accumulate_log_occlusion.
 #extension GL_GOOGLE_include_directive : require
 #define FRAME_TILE_CULLING
@@ -19,6 +19,7 @@ layout(std430, set = 0, binding = kShadowBindReceivers) readonly buffer Receiver
 layout(std140, set = 0, binding = kShadowBindProxies) uniform Proxies { ProxySphere proxies[kMaxProxies]; };
 layout(std430, set = 0, binding = kShadowBindLogTable) readonly buffer LogTable { float log_table[]; };
 layout(std430, set = 0, binding = kShadowBindLogOcclusion) writeonly buffer LogOcclusion { float log_occlusion[]; };
+layout(std430, set = 0, binding = kShadowBindTileCounts) writeonly buffer TileCounts { uint tile_list_lengths[]; };
 
 vec4 proxy_center_radius(uint i) { return proxies[i].center_radius; }
 
@@ -34,6 +35,7 @@ void main() {
   bool valid = inside && r.position_depth.w > 0.0;
   vec3 p = r.position_depth.xyz;
   TILE_CULL(proxy_center_radius, frame.proxy_count, frame.shadow_eta, p, valid);
+  if (gl_LocalInvocationIndex == 0u) tile_list_lengths[gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x] = tile_proxy_count;
   if (!inside) return;
 
   float f[SH_COUNT];

@@ -8,6 +8,9 @@
 // elsewhere; HDR linear out and tonemapped sRGB 8-bit out (packed RGBA8).
 // Vertex method (frame.composite_mode == kCompositeDisplayIrradiance): step 7 is the rasterizer's
 // interpolation of the vertex irradiance, which the G-buffer's second target already holds.
+// The viewer's views (frame.debug_view, layouts.h kDebugView*) show an input instead: the
+// direct and indirect buffers upsampled with the same taps (so they sum to the final frame), the
+// visibility DC, or the shadow pass's per-tile list lengths as a heat map.
 // CPU twins: render::upsample, render::tonemap and image::linear_to_srgb.
 #extension GL_GOOGLE_include_directive : require
 #include "frame_common.glsl"
@@ -23,6 +26,9 @@ layout(set = 0, binding = kCompositeBindAlbedo, rgba32f) uniform readonly image2
 layout(std430, set = 0, binding = kCompositeBindEnvironment) readonly buffer Environment { vec4 environment[]; };
 layout(std430, set = 0, binding = kCompositeBindHdr) writeonly buffer Hdr { vec4 hdr[]; };
 layout(std430, set = 0, binding = kCompositeBindLdr) writeonly buffer Ldr { uint ldr[]; };
+layout(std430, set = 0, binding = kCompositeBindDirect) readonly buffer Direct { vec4 direct_light[]; };      // (E_direct, w)
+layout(std430, set = 0, binding = kCompositeBindIndirect) readonly buffer Indirect { vec4 indirect_light[]; };  // (E_indirect, ω)
+layout(std430, set = 0, binding = kCompositeBindTileCounts) readonly buffer TileCounts { uint tile_list_lengths[]; };
 layout(push_constant) uniform Push { CompositePush push; };
 
 vec3 environment_radiance(vec3 direction) {
@@ -48,8 +54,19 @@ float linear_to_srgb(float value) {
   return value <= 0.0031308 ? 12.92 * value : 1.055 * pow(value, 1.0 / 2.4) - 0.055;
 }
 
-// Step 7 for a covered pixel.
-vec3 upsampled_irradiance(uvec2 pixel, float depth) {
+// Step 7's taps for a covered pixel: the valid receivers of the 2×2 around it with their weights
+// (eq. 11 or bilinear) and shaded values; when every weight vanishes, the tap nearest in depth
+// alone (weight 1). Any receiver quantity upsamples as Σ w_i v_i / weight_sum with these taps, so
+// the direct and indirect views sum to the final frame's irradiance.
+struct UpsampleTaps {
+  uint index[4];
+  float weight[4];
+  vec3 shaded[4];
+  int count;
+  float weight_sum;
+};
+
+UpsampleTaps upsample_taps(uvec2 pixel, float depth) {
   vec3 normal = imageLoad(normal_image, ivec2(pixel)).xyz;
   ivec2 receiver_size = ivec2(uvec2(frame.receiver_width, frame.receiver_height));
   float k = float(frame.receiver_scale);
@@ -59,9 +76,11 @@ vec3 upsampled_irradiance(uvec2 pixel, float depth) {
   vec2 fraction = coordinate - vec2(base);
   bool bilateral = frame.composite_mode == kCompositeBilateral;
   float epsilon = frame.bilateral_depth_epsilon;
-  vec3 total = vec3(0.0);
+  UpsampleTaps taps;
+  taps.count = 0;
   float weight_sum = 0.0, bilinear_sum = 0.0;
   float nearest_gap = 1e30;
+  uint nearest_index = 0u;
   vec3 nearest_value = vec3(0.0);
   for (int tap = 0; tap < 4; ++tap) {
     ivec2 offset = ivec2(tap & 1, tap >> 1);
@@ -84,15 +103,48 @@ vec3 upsampled_irradiance(uvec2 pixel, float depth) {
       weight *= facing / (epsilon + abs(depth - tap_depth));
       weight *= epsilon;
     }
-    total += weight * value;
+    taps.index[taps.count] = index;
+    taps.weight[taps.count] = weight;
+    taps.shaded[taps.count] = value;
+    ++taps.count;
     weight_sum += weight;
     float gap = abs(tap_depth - depth);
     if (gap < nearest_gap) {
       nearest_gap = gap;
+      nearest_index = index;
       nearest_value = value;
     }
   }
-  return weight_sum > 1e-6 * max(bilinear_sum, 1e-30) ? total / weight_sum : nearest_value;
+  taps.weight_sum = weight_sum;
+  if (!(weight_sum > 1e-6 * max(bilinear_sum, 1e-30))) {
+    taps.count = 1;
+    taps.index[0] = nearest_index;
+    taps.weight[0] = 1.0;
+    taps.shaded[0] = nearest_value;
+    taps.weight_sum = 1.0;
+  }
+  return taps;
+}
+
+vec3 upsample_shaded(UpsampleTaps taps) {
+  vec3 total = vec3(0.0);
+  for (int t = 0; t < taps.count; ++t) total += taps.weight[t] * taps.shaded[t];
+  return total / taps.weight_sum;
+}
+
+// A receiver quantity (kDebugViewDirect: E_direct and its w, kDebugViewIndirect: E_indirect) with the same taps.
+vec4 upsample_buffer(UpsampleTaps taps, uint view) {
+  vec4 total = vec4(0.0);
+  for (int t = 0; t < taps.count; ++t)
+    total += taps.weight[t] * (view == kDebugViewIndirect ? indirect_light[taps.index[t]] : direct_light[taps.index[t]]);
+  return total / taps.weight_sum;
+}
+
+// The heat map's ramp over t = count / proxies in [0, 1] (blue, cyan, green, yellow, red); the
+// UI's legend draws the same (viewer_ui.cpp heat_color).
+vec3 heat_color(float t) {
+  t = clamp(t, 0.0, 1.0);
+  return clamp(vec3(1.5 - abs(4.0 * t - 3.0), 1.5 - abs(4.0 * t - 2.0), 1.5 - abs(4.0 * t - 1.0)), 0.0, 1.0);
 }
 
 // The shading of the receiver whose block holds this pixel (the 1/k grid as it is).
@@ -108,13 +160,23 @@ void main() {
   if (any(greaterThanEqual(pixel, display_size))) return;
   uint index = pixel.y * display_size.x + pixel.x;
   vec4 position_depth = imageLoad(position_depth_image, ivec2(pixel));
+  uint view = frame.debug_view;
+  bool receiver_views = frame.composite_mode != kCompositeDisplayIrradiance;  // the vertex method has none at display res
   vec3 radiance;
   vec3 e = vec3(0.0);
+  vec3 albedo = vec3(0.0);
+  UpsampleTaps taps;
+  taps.count = 0;
   if (position_depth.w > 0.0) {
-    e = frame.composite_mode == kCompositeDisplayIrradiance ? imageLoad(normal_image, ivec2(pixel)).rgb
-                                                           : upsampled_irradiance(pixel, position_depth.w);
+    albedo = imageLoad(albedo_image, ivec2(pixel)).rgb;
+    if (frame.composite_mode == kCompositeDisplayIrradiance) {
+      e = imageLoad(normal_image, ivec2(pixel)).rgb;
+    } else {
+      taps = upsample_taps(pixel, position_depth.w);
+      e = upsample_shaded(taps);
+    }
     irradiance[index] = vec4(e, 1.0);
-    radiance = imageLoad(albedo_image, ivec2(pixel)).rgb / kPi * e;
+    radiance = albedo / kPi * e;
   } else {
     irradiance[index] = vec4(0.0);
     vec2 ndc = (vec2(pixel) + 0.5) / vec2(display_size) * 2.0 - 1.0;
@@ -122,16 +184,26 @@ void main() {
     vec3 direction = normalize(far_point.xyz / far_point.w - frame.eye_position.xyz);
     radiance = environment_radiance(direction);
   }
-  vec3 display;
-  if (frame.debug_view != kDebugViewFinal && position_depth.w > 0.0) {  // the viewer's views
-    uint view = frame.debug_view;
-    if (view == kDebugViewAlbedo) display = imageLoad(albedo_image, ivec2(pixel)).rgb;
+  vec3 display = tonemap(radiance);
+  if (view != kDebugViewFinal && position_depth.w > 0.0 && view <= kDebugViewReceivers) {  // the frame's inputs
+    if (view == kDebugViewAlbedo) display = albedo;
     else if (view == kDebugViewNormals) display = 0.5 + 0.5 * imageLoad(normal_image, ivec2(pixel)).xyz;
     else if (view == kDebugViewIrradiance) display = tonemap(e / kPi);
     else display = tonemap(nearest_receiver(pixel) / kPi);
     radiance = display;
-  } else {
+  } else if ((view == kDebugViewDirect || view == kDebugViewIndirect) && position_depth.w > 0.0 && receiver_views) {
+    radiance = albedo / kPi * upsample_buffer(taps, view).rgb;
     display = tonemap(radiance);
+  } else if (view == kDebugViewOcclusion && position_depth.w > 0.0 && receiver_views) {
+    float visible = clamp(upsample_buffer(taps, kDebugViewDirect).w * frame.occlusion_scale, 0.0, 1.0);
+    radiance = vec3(visible);
+    display = radiance;
+  } else if (view == kDebugViewHeatMap && frame.tile_counts_valid != 0u) {
+    uvec2 tile = pixel / (frame.receiver_scale * kFrameLocalSize);
+    uint tiles_x = (frame.receiver_width + kFrameLocalSize - 1u) / kFrameLocalSize;
+    uint count = tile_list_lengths[tile.y * tiles_x + tile.x];
+    if (count > 0u) display = mix(display, heat_color(float(count) / float(max(frame.proxy_count, 1u))), 0.65);
+    radiance = vec3(float(count));
   }
   hdr[index] = vec4(radiance, 1.0);
   uvec3 encoded = uvec3(clamp(vec3(linear_to_srgb(display.r), linear_to_srgb(display.g), linear_to_srgb(display.b)), 0.0, 1.0) * 255.0 + 0.5);

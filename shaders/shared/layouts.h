@@ -96,8 +96,8 @@ struct FrameConstants {
   float bilateral_depth_epsilon; // ε of eq. 11 (m)
   uint indirect_enabled;         // 0: no bounce light
   uint debug_view;               // kDebugView*: what the composite writes (the viewer's views)
-  uint padding_debug0;
-  uint padding_debug1;
+  uint tile_counts_valid;        // 1: the shadow pass wrote the TileCounts buffer (compute gather, AO)
+  float occlusion_scale;         // direct[].w × this = visible fraction of the sphere (1/√4π SHEXP, 1 AO)
   uint padding_debug2;
   vec4 irradiance_sh[3u * kIndirectOrder * kIndirectOrder];  // L̃ = L * clamped cosine, order 3, r then g then b; x used
 };
@@ -114,6 +114,16 @@ PROXYGI_CONST(uint, kDebugViewAlbedo, 1u);      // G-buffer albedo, as display v
 PROXYGI_CONST(uint, kDebugViewNormals, 2u);     // G-buffer normal, 0.5 + 0.5 n
 PROXYGI_CONST(uint, kDebugViewIrradiance, 3u);  // E/π (direct + indirect light on white), tonemapped
 PROXYGI_CONST(uint, kDebugViewReceivers, 4u);   // the nearest receiver's E/π, no upsampling: 1/k blocks
+// These write the view's value to the HDR output (display: its tonemap or ramp); covered pixels
+// only (the background stays the environment), not for the vertex method (final frame instead):
+PROXYGI_CONST(uint, kDebugViewDirect, 5u);      // albedo/π · E_direct (the final frame = direct + indirect)
+PROXYGI_CONST(uint, kDebugViewIndirect, 6u);    // albedo/π · E_indirect
+PROXYGI_CONST(uint, kDebugViewOcclusion, 7u);   // visible fraction of the sphere, (O_p)_0/√4π (AO: A), in [0, 1]
+// Every pixel: the proxies kept by its 8×8-receiver tile's culling (shadow η; HDR = the count),
+// shown as a ramp over 0..proxy_count blended on the final frame. Where the shadow pass keeps no
+// tile lists (raster splat, vertex method: tile_counts_valid 0) it shows the final frame.
+PROXYGI_CONST(uint, kDebugViewHeatMap, 8u);
+PROXYGI_CONST(uint, kDebugViewCount, 9u);
 // FrameConstants::tonemap.
 PROXYGI_CONST(uint, kTonemapAces, 0u);
 PROXYGI_CONST(uint, kTonemapReinhard, 1u);
@@ -170,6 +180,9 @@ PROXYGI_CONST(uint, kShadowBindReceivers, 1u);
 PROXYGI_CONST(uint, kShadowBindProxies, 2u);
 PROXYGI_CONST(uint, kShadowBindLogTable, 3u);
 PROXYGI_CONST(uint, kShadowBindLogOcclusion, 4u);
+// Per 8×8-receiver tile (row-major over ceil(receiver_width / 8) tiles a row): how many proxies
+// its culling kept. Written by shadow_gather.comp and ambient_occlusion.comp (lane 0 of a group).
+PROXYGI_CONST(uint, kShadowBindTileCounts, 5u);
 // exponentiate.comp
 PROXYGI_CONST(uint, kExponentiateBindFrame, 0u);
 PROXYGI_CONST(uint, kExponentiateBindReceivers, 1u);
@@ -197,6 +210,9 @@ PROXYGI_CONST(uint, kCompositeBindAlbedo, 6u);
 PROXYGI_CONST(uint, kCompositeBindEnvironment, 7u);
 PROXYGI_CONST(uint, kCompositeBindHdr, 8u);
 PROXYGI_CONST(uint, kCompositeBindLdr, 9u);
+PROXYGI_CONST(uint, kCompositeBindDirect, 10u);
+PROXYGI_CONST(uint, kCompositeBindIndirect, 11u);
+PROXYGI_CONST(uint, kCompositeBindTileCounts, 12u);
 // ambient_occlusion.comp
 PROXYGI_CONST(uint, kAoBindFrame, 0u);
 PROXYGI_CONST(uint, kAoBindReceivers, 1u);
@@ -205,6 +221,7 @@ PROXYGI_CONST(uint, kAoBindLightingCube, 3u);
 PROXYGI_CONST(uint, kAoBindDirect, 4u);
 PROXYGI_CONST(uint, kAoBindIndirect, 5u);
 PROXYGI_CONST(uint, kAoBindShaded, 6u);
+PROXYGI_CONST(uint, kAoBindTileCounts, 7u);
 // gbuffer.vert / gbuffer.frag
 PROXYGI_CONST(uint, kGbufferBindFrame, 0u);
 PROXYGI_CONST(uint, kGbufferBindPositions, 1u);

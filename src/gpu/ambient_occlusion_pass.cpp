@@ -13,7 +13,8 @@ Result<AmbientOcclusionPass> AmbientOcclusionPass::create(const Context& context
                                      {kAoBindLightingCube, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                                      {kAoBindDirect, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                                      {kAoBindIndirect, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                                     {kAoBindShaded, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+                                     {kAoBindShaded, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                     {kAoBindTileCounts, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
   auto pipeline = make_compute_pipeline(context, order_variant("ambient_occlusion.comp", order), bindings);
   if (!pipeline) return pipeline.error();
   AmbientOcclusionPass pass;
@@ -23,7 +24,7 @@ Result<AmbientOcclusionPass> AmbientOcclusionPass::create(const Context& context
 
 std::vector<ResourceAccess> AmbientOcclusionPass::accesses(const Inputs& in, const Outputs& out) const {
   return {reads(in.constants),   reads(in.receivers),    reads(in.proxies),  reads(in.lighting_cube),
-          writes(out.direct),    writes(out.indirect),   writes(out.shaded)};
+          writes(out.direct),    writes(out.indirect),   writes(out.shaded), writes(out.tile_counts)};
 }
 
 void AmbientOcclusionPass::record(const Context& context, VkCommandBuffer commands, const Inputs& in,
@@ -37,6 +38,7 @@ void AmbientOcclusionPass::record(const Context& context, VkCommandBuffer comman
       .storage_buffer(kAoBindDirect, *out.direct)
       .storage_buffer(kAoBindIndirect, *out.indirect)
       .storage_buffer(kAoBindShaded, *out.shaded)
+      .storage_buffer(kAoBindTileCounts, *out.tile_counts)
       .push(context, commands, pipeline_);
   dispatch_grid(commands, in.receiver_width, in.receiver_height);
 }

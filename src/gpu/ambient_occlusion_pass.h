@@ -22,6 +22,7 @@ class AmbientOcclusionPass {
     const Buffer* direct = nullptr;
     const Buffer* indirect = nullptr;
     const Buffer* shaded = nullptr;
+    const Buffer* tile_counts = nullptr;  // uint per 8×8-receiver tile: proxies its culling kept (heat map)
   };
   static constexpr FramePass kPass = FramePass::shadow;
 

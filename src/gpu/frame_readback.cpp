@@ -32,6 +32,20 @@ Result<image::ImageF> SoftGiFrame::read_shaded() const {
   return read_vec4_buffer(targets_.shaded, config_.receiver_width(), config_.receiver_height());
 }
 
+std::uint32_t SoftGiFrame::tiles_x() const {
+  return (config_.receiver_width() + gpu_layout::kFrameLocalSize - 1) / gpu_layout::kFrameLocalSize;
+}
+std::uint32_t SoftGiFrame::tiles_y() const {
+  return (config_.receiver_height() + gpu_layout::kFrameLocalSize - 1) / gpu_layout::kFrameLocalSize;
+}
+Result<std::vector<std::uint32_t>> SoftGiFrame::read_tile_counts() const {
+  auto bytes = readback(context_, targets_.tile_counts);
+  if (!bytes) return bytes.error();
+  std::vector<std::uint32_t> counts(std::size_t(tiles_x()) * tiles_y());
+  std::memcpy(counts.data(), bytes->data(), std::min(bytes->size(), counts.size() * sizeof(std::uint32_t)));
+  return counts;
+}
+
 Result<image::ImageF> SoftGiFrame::read_receiver_field(bool normals) const {
   auto bytes = readback(context_, targets_.receivers);
   if (!bytes) return bytes.error();

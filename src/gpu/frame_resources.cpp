@@ -88,6 +88,7 @@ Status SoftGiFrame::build_targets() {
       {&targets.irradiance, pixels * sizeof(glm::vec4)},
       {&targets.hdr, pixels * sizeof(glm::vec4)},
       {&targets.ldr, pixels * sizeof(std::uint32_t)},
+      {&targets.tile_counts, VkDeviceSize(tiles_x()) * tiles_y() * sizeof(std::uint32_t)},
   };
   for (const auto& target : buffers) {
     auto made = Buffer::create(context_, target.bytes, kStorage, MemoryKind::device_local);

@@ -1,10 +1,12 @@
 #include "gpu/scene_renderer.h"
 
+#include <cstdio>
 #include <cstring>
 #include <functional>
 
 #include "anim/skinning.h"
 #include "base/log.h"
+#include "gpu/pass_timestamps.h"
 #include "gpu/scene_renderer_parts.h"
 #include "gpu/transfer.h"
 #include "settings/fields.h"
@@ -265,7 +267,7 @@ Result<FinishedFrame> SceneRenderer::finish_frame(int frame) {
 
 Result<FinishedFrame> SceneRenderer::render(int frame) { return render(scene_frame(scene(), frame)); }
 
-Result<PassTimings> SceneRenderer::time_passes(int frame) {
+Result<PassTimings> SceneRenderer::time_passes(int frame, PassClock clock) {
   for (const SlotState& slot : slots_)
     if (slot.busy) return make_error("time_passes: finish every begun frame first");
   const auto start = std::chrono::steady_clock::now();
@@ -279,10 +281,46 @@ Result<PassTimings> SceneRenderer::time_passes(int frame) {
     if (Status done = context_.submit_and_wait(record); !done) return done.error();
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin_time).count();
   };
+  const auto passes = frame_pass_order(frame_->settings().method);
+  if (clock == PassClock::timestamps_if_valid) {
+    // One submit: a timestamp before skinning and after it and each pass.
+    auto queries = TimestampQueries::create(context_, std::uint32_t(passes.size()) + 2);
+    if (!queries) {
+      timings.note = queries.message();
+    } else {
+      auto fenced = timed([&](VkCommandBuffer commands) {
+        queries->reset(commands);
+        queries->write(commands, 0);
+        record_skinning(commands, 0);
+        queries->write(commands, 1);
+        PassBarriers barriers;
+        memory_barrier(commands);  // skinning wrote what the G-buffer reads
+        for (std::size_t p = 0; p < passes.size(); ++p) {
+          frame_->record_pass(commands, 0, passes[p], *draws, barriers);
+          queries->write(commands, std::uint32_t(p) + 2);
+        }
+      });
+      if (!fenced) return fenced.error();
+      auto intervals = queries->intervals_ms();
+      if (!intervals) return intervals.error();
+      double sum = 0.0;
+      for (double ms : *intervals) sum += ms;
+      timings.frame_fenced_ms = *fenced;
+      char note[160];
+      std::snprintf(note, sizeof note, "timestamps implausible: %.3g ms of %.3g ms fenced", sum, *fenced);
+      if (sum >= 0.25 * *fenced && sum <= *fenced) {
+        timings.timestamps = true;
+        timings.milliseconds[std::size_t(FramePass::skin)] = (*intervals)[0];
+        for (std::size_t p = 0; p < passes.size(); ++p) timings.milliseconds[std::size_t(passes[p])] = (*intervals)[p + 1];
+        return timings;
+      }
+      timings.note = note;
+    }
+  }
   auto skin = timed([&](VkCommandBuffer commands) { record_skinning(commands, 0); });
   if (!skin) return skin.error();
   timings.milliseconds[std::size_t(FramePass::skin)] = *skin;
-  for (FramePass pass : frame_pass_order(frame_->settings().method)) {
+  for (FramePass pass : passes) {
     auto ms = timed([&](VkCommandBuffer commands) {
       memory_barrier(commands);  // the previous pass's submission wrote what this one reads
       PassBarriers barriers;

@@ -41,13 +41,24 @@ struct FrameStatistics {
   double cpu_prepare_ms = 0.0;       // world evaluation, skin palettes, tracking, uploads
 };
 
-// Milliseconds of each pass of one frame, each submitted and fenced on its own and timed with
-// the CPU clock (lavapipe's GPU timestamps are unreliable, rendering-notes §4.2). Their sum
-// exceeds a pipelined frame's time by the per-submit overhead.
+// How time_passes measures:
+//   fenced_cpu           each pass submitted and fenced on its own, timed with the CPU clock
+//                        (their sum exceeds a pipelined frame's time by the per-submit overhead);
+//   timestamps_if_valid  the whole frame in one submit with a GPU timestamp after each pass
+//                        (pass_timestamps.h), fenced; used when the device's timestamps are valid
+//                        and their sum is plausible against that fenced time (at least a quarter
+//                        of it: lavapipe's go wrong after draws, rendering-notes §4.2), else
+//                        fenced_cpu with the reason in `note`.
+enum class PassClock { fenced_cpu, timestamps_if_valid };
+
+// Milliseconds of each pass of one frame, keyed by the pass names of `bench frame`.
 struct PassTimings {
   std::array<double, std::size_t(FramePass::count)> milliseconds{};  // indexed by FramePass
   double cpu_prepare_ms = 0.0;
   std::size_t proxies = 0;
+  bool timestamps = false;      // milliseconds come from GPU timestamps (else fenced CPU timings)
+  double frame_fenced_ms = 0.0; // timestamps_if_valid: the one fenced submit of the whole frame
+  std::string note;             // why fenced CPU timings were used, if timestamps were asked for
 };
 
 // What to render: a scene time and optionally a camera, or a world state evaluated by the caller.
@@ -100,9 +111,9 @@ class SceneRenderer {
   Status begin_frame(int frame);
   Result<FinishedFrame> finish_frame(int frame);  // the oldest begun frame with that number
   Result<FinishedFrame> render(int frame);
-  // Prepares frame `frame` and runs its passes one submit each, timing every pass. Needs every
-  // begun frame finished. The frame's pixels are not copied out.
-  Result<PassTimings> time_passes(int frame);
+  // Prepares frame `frame` and times each of its passes (PassClock). Needs every begun frame
+  // finished. The frame's pixels are not copied out.
+  Result<PassTimings> time_passes(int frame, PassClock clock = PassClock::fenced_cpu);
 
   // The skinned world-space positions of the last finished frame, per instance and primitive in
   // the order of the instance's mesh nodes (what the G-buffer drew; for tests against the CPU

@@ -11,7 +11,8 @@ Result<ShadowGatherPass> ShadowGatherPass::create(const Context& context, int or
                                      {kShadowBindReceivers, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                                      {kShadowBindProxies, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
                                      {kShadowBindLogTable, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                                     {kShadowBindLogOcclusion, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+                                     {kShadowBindLogOcclusion, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                     {kShadowBindTileCounts, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
   auto pipeline = make_compute_pipeline(context, order_variant("shadow_gather.comp", order), bindings);
   if (!pipeline) return pipeline.error();
   ShadowGatherPass pass;
@@ -20,7 +21,7 @@ Result<ShadowGatherPass> ShadowGatherPass::create(const Context& context, int or
 }
 
 std::vector<ResourceAccess> ShadowGatherPass::accesses(const Inputs& in, const Outputs& out) const {
-  return {reads(in.constants), reads(in.receivers), reads(in.proxies), reads(in.log_table), writes(out.log_occlusion)};
+  return {reads(in.constants), reads(in.receivers), reads(in.proxies), reads(in.log_table), writes(out.log_occlusion), writes(out.tile_counts)};
 }
 
 void ShadowGatherPass::record(const Context& context, VkCommandBuffer commands, const Inputs& in,
@@ -32,6 +33,7 @@ void ShadowGatherPass::record(const Context& context, VkCommandBuffer commands, 
       .uniform_buffer(kShadowBindProxies, *in.proxies)
       .storage_buffer(kShadowBindLogTable, *in.log_table)
       .storage_buffer(kShadowBindLogOcclusion, *out.log_occlusion)
+      .storage_buffer(kShadowBindTileCounts, *out.tile_counts)
       .push(context, commands, pipeline_);
   dispatch_grid(commands, in.receiver_width, in.receiver_height);
 }

@@ -20,6 +20,7 @@ class ShadowGatherPass {
   };
   struct Outputs {
     const Buffer* log_occlusion = nullptr;  // receivers × n² floats
+    const Buffer* tile_counts = nullptr;    // uint per 8×8-receiver tile: proxies its culling kept (heat map)
   };
   static constexpr FramePass kPass = FramePass::shadow;
 

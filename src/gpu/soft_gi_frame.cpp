@@ -99,6 +99,14 @@ Status SoftGiFrame::write_slot(std::uint32_t slot, const FrameView& view, std::s
   constants.eye_position = glm::vec4(view.eye, 1.0f);
   constants.eye_forward = glm::vec4(glm::normalize(view.forward), 0.0f);
   constants.debug_view = view.debug_view;
+  // The heat map reads the tile lists of the gather and the AO pass (the raster splat keeps none;
+  // the vertex method's receivers are vertices, not screen tiles).
+  constants.tile_counts_valid = render.method == settings::ShadingMethod::ambient_occlusion ||
+                                        (render.method == settings::ShadingMethod::image_space &&
+                                         render.splat == settings::SplatMethod::compute)
+                                    ? 1u
+                                    : 0u;
+  constants.occlusion_scale = render.method == settings::ShadingMethod::ambient_occlusion ? 1.0f : 1.0f / 3.5449077018110318f;
   constants.display_width = config_.width;
   constants.display_height = config_.height;
   constants.receiver_width = config_.receiver_width();
@@ -163,7 +171,7 @@ void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot_index
       if (passes_.ambient_occlusion) {
         run(*passes_.ambient_occlusion,
             AmbientOcclusionPass::Inputs{&slot.constants, &t.receivers, &slot.proxies, &tables_.lighting_cube, rw, rh},
-            AmbientOcclusionPass::Outputs{&t.direct, &t.indirect, &t.shaded});
+            AmbientOcclusionPass::Outputs{&t.direct, &t.indirect, &t.shaded, &t.tile_counts});
       } else if (passes_.shadow_splat) {
         const ShadowSplatInputs inputs{&slot.constants, &t.receivers, &slot.proxies, slot.proxy_count,
                                        &tables_.log_table, &t.log_occlusion};
@@ -174,7 +182,7 @@ void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot_index
       } else {
         run(*passes_.shadow_gather,
             ShadowGatherPass::Inputs{&slot.constants, &t.receivers, &slot.proxies, &tables_.log_table, rw, rh},
-            ShadowGatherPass::Outputs{&t.log_occlusion});
+            ShadowGatherPass::Outputs{&t.log_occlusion, &t.tile_counts});
       }
       break;
     case FramePass::exponentiate:
@@ -192,7 +200,8 @@ void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot_index
     case FramePass::upsample_composite:
       run(*passes_.upsample_composite,
           UpsampleCompositePass::Inputs{&slot.constants, &t.position_depth, &t.normal, &t.albedo, &t.receivers,
-                                        &t.shaded, &environment_, environment_width_, environment_height_,
+                                        &t.shaded, &t.direct, &t.indirect, &t.tile_counts, &environment_,
+                                        environment_width_, environment_height_,
                                         config_.width, config_.height},
           UpsampleCompositePass::Outputs{&t.irradiance, &t.hdr, &t.ldr});
       break;

@@ -97,6 +97,10 @@ class SoftGiFrame {
   Result<image::ImageF> read_receiver_normals() const;
   Result<std::vector<float>> read_log_occlusion() const; // receiver res × n²
   Result<image::ImageF> read_shaded() const;             // receiver res: rgb E_dir + E_ind, a depth
+  // Proxies kept by each 8×8-receiver tile's culling (gather or AO; row-major, tiles_x() a row).
+  Result<std::vector<std::uint32_t>> read_tile_counts() const;
+  std::uint32_t tiles_x() const;
+  std::uint32_t tiles_y() const;
   // G-buffer (display res): xyz world position, a eye depth (0 = background); xyz normal.
   Result<image::ImageF> read_gbuffer_positions() const;
   Result<image::ImageF> read_gbuffer_normals() const;
@@ -106,6 +110,7 @@ class SoftGiFrame {
   struct Targets {
     Image position_depth, normal, albedo, depth;
     Buffer receivers, log_occlusion, direct, indirect, shaded, irradiance, hdr, ldr;
+    Buffer tile_counts;  // uint per 8×8-receiver tile (tile_count()), the shadow pass's list lengths
   };
   struct Tables {
     Buffer log_table, visibility_table, optimal_linear, lighting_cube, exact_indirect;

@@ -16,7 +16,10 @@ Result<UpsampleCompositePass> UpsampleCompositePass::create(const Context& conte
                                      {kCompositeBindAlbedo, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
                                      {kCompositeBindEnvironment, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                                      {kCompositeBindHdr, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                                     {kCompositeBindLdr, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+                                     {kCompositeBindLdr, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                     {kCompositeBindDirect, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                     {kCompositeBindIndirect, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                     {kCompositeBindTileCounts, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
   auto pipeline = make_compute_pipeline(context, "upsample_composite.comp", bindings, sizeof(CompositePush));
   if (!pipeline) return pipeline.error();
   UpsampleCompositePass pass;
@@ -26,7 +29,8 @@ Result<UpsampleCompositePass> UpsampleCompositePass::create(const Context& conte
 
 std::vector<ResourceAccess> UpsampleCompositePass::accesses(const Inputs& in, const Outputs& out) const {
   return {reads(in.constants), reads(in.position_depth), reads(in.normal),     reads(in.albedo),
-          reads(in.receivers), reads(in.shaded),         reads(in.environment), writes(out.irradiance),
+          reads(in.receivers), reads(in.shaded),         reads(in.environment), reads(in.direct),
+          reads(in.indirect),  reads(in.tile_counts),   writes(out.irradiance),
           writes(out.hdr),     writes(out.ldr)};
 }
 
@@ -44,6 +48,9 @@ void UpsampleCompositePass::record(const Context& context, VkCommandBuffer comma
       .storage_buffer(kCompositeBindEnvironment, *in.environment)
       .storage_buffer(kCompositeBindHdr, *out.hdr)
       .storage_buffer(kCompositeBindLdr, *out.ldr)
+      .storage_buffer(kCompositeBindDirect, *in.direct)
+      .storage_buffer(kCompositeBindIndirect, *in.indirect)
+      .storage_buffer(kCompositeBindTileCounts, *in.tile_counts)
       .push(context, commands, pipeline_);
   const CompositePush push{in.environment_width, in.environment_height, 0, 0};
   pipeline_.push_constants(commands, &push, sizeof(push));

@@ -2,7 +2,8 @@
 // Upsample + composite (frame steps 7 and 8 fused, upsample_composite.comp): display-resolution
 // irradiance from the 2×2 surrounding receivers (joint-bilateral eq. 11 or bilinear; the vertex
 // method's G-buffer already holds it), radiance = albedo/π · E on covered pixels and the
-// environment elsewhere, HDR and tonemapped sRGB out. CPU twins: render::upsample, render::tonemap.
+// environment elsewhere, HDR and tonemapped sRGB out; or one of the viewer's views (layouts.h
+// kDebugView*). CPU twins: render::upsample, render::tonemap.
 #include "base/result.h"
 #include "gpu/frame_passes.h"
 #include "gpu/pass_barriers.h"
@@ -19,6 +20,9 @@ class UpsampleCompositePass {
     const Image* albedo = nullptr;
     const Buffer* receivers = nullptr;
     const Buffer* shaded = nullptr;
+    const Buffer* direct = nullptr;         // the views: (E_direct, visibility DC) per receiver
+    const Buffer* indirect = nullptr;       // (E_indirect, ω) per receiver
+    const Buffer* tile_counts = nullptr;    // the heat map: uint per 8×8-receiver tile
     const Buffer* environment = nullptr;    // equirectangular vec4 radiance
     std::uint32_t environment_width = 0, environment_height = 0;
     std::uint32_t width = 0, height = 0;    // display

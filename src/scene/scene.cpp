@@ -32,6 +32,11 @@ std::filesystem::path resolve_scene_path(const Scene& scene, const std::string& 
 
 bool is_builtin_mannequin(std::string_view model) { return model == kBuiltinMannequin; }
 
+bool names_the_mannequin(const std::string& argument) {
+  std::error_code error;
+  return (argument == "mannequin" || is_builtin_mannequin(argument)) && !std::filesystem::exists(argument, error);
+}
+
 std::filesystem::path resolve_model_path(const Scene& scene, const std::string& model,
                                          const std::filesystem::path& assets_dir) {
   if (is_builtin_mannequin(model)) return assets_dir / "mannequin.glb";

@@ -278,6 +278,9 @@ int last_frame(const Output& output);  // inclusive
 // kept). Not for "builtin:" models.
 std::filesystem::path resolve_scene_path(const Scene& scene, const std::string& path);
 bool is_builtin_mannequin(std::string_view model);
+// A command-line argument naming the mannequin: "mannequin" or "builtin:mannequin" when no file
+// of that name exists (a file wins). Every command (record, fit, view ...) reads it this way.
+bool names_the_mannequin(const std::string& argument);
 // The model file to load: assets_dir / "mannequin.glb" for the built-in, else resolved.
 std::filesystem::path resolve_model_path(const Scene& scene, const std::string& model,
                                          const std::filesystem::path& assets_dir);

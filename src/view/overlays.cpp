@@ -64,19 +64,40 @@ void draw_grid(ImDrawList& list, const Projector& projector) {
   }
 }
 
+// Every triangle edge of the instance's meshes, skinned on the CPU (world::World::pose_instance),
+// drawn over the frame without a depth test (an x-ray view: hidden edges show too). At most
+// kMaxWireframeEdges per frame, so a crowd stays interactive.
+constexpr std::size_t kMaxWireframeEdges = 150000;
+
+void draw_wireframe(ImDrawList& list, const Projector& projector, const world::World& world,
+                    const world::WorldState& state, std::size_t instance, std::size_t& edges) {
+  auto primitives = world.pose_instance(state, instance);
+  if (!primitives) return;
+  const ImU32 color = IM_COL32(120, 255, 200, 110);
+  for (const anim::PosedPrimitive& primitive : *primitives)
+    for (std::size_t t = 0; t + 2 < primitive.indices.size() && edges < kMaxWireframeEdges; t += 3, edges += 3)
+      for (int e = 0; e < 3; ++e) {
+        const std::uint32_t a = primitive.indices[t + std::size_t(e)], b = primitive.indices[t + std::size_t((e + 1) % 3)];
+        if (a < primitive.positions.size() && b < primitive.positions.size())
+          draw_segment(list, projector, primitive.positions[a], primitive.positions[b], color, 1.0f);
+      }
+}
+
 }  // namespace
 
 void draw_overlays(const scene::CameraState& camera, const world::World* world, const world::WorldState& state,
                    const Toggles& toggles, float shadow_eta) {
-  if (!toggles.grid && !toggles.proxies && !toggles.bones) return;
+  if (!toggles.grid && !toggles.proxies && !toggles.bones && !toggles.wireframe) return;
   const ImVec2 size = ImGui::GetIO().DisplaySize;
   const Projector projector(camera, int(size.x), int(size.y));
   ImDrawList& list = *ImGui::GetBackgroundDrawList();
   if (toggles.grid) draw_grid(list, projector);
   if (!world) return;
+  std::size_t wireframe_edges = 0;
   for (std::size_t i = 0; i < state.instances.size() && i < world->instances().size(); ++i) {
     const world::Model& model = *world->instances()[i].model;
     const world::InstanceState& instance = state.instances[i];
+    if (toggles.wireframe) draw_wireframe(list, projector, *world, state, i, wireframe_edges);
     if (toggles.proxies) {
       for (std::size_t s = 0; s < instance.spheres.size(); ++s) {
         const auto& sphere = instance.spheres[s];

@@ -2,7 +2,8 @@
 // Overlays drawn with Dear ImGui's background draw list, projected through the frame's camera:
 // proxy spheres (their silhouette circles, coloured by bone; the selected bone's drawn white
 // and thick; optionally their η·r shells, dimmer), the skeleton (a line from each
-// node to its parent, for nodes that are skin joints), and a 1 m ground grid. They are part of
+// node to its parent, for nodes that are skin joints), the characters' triangle edges (W: skinned
+// on the CPU, x-ray: no depth test), and a 1 m ground grid. They are part of
 // the UI: hidden with it (F10) and absent from screenshots taken without the UI.
 #include "scene/camera.h"
 #include "view/viewer_core.h"

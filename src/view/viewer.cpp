@@ -15,12 +15,28 @@ Status run_viewer(const ViewerOptions& options) {
   return viewer.run();
 }
 
-Viewer::Viewer(const ViewerOptions& options) : options_(options), loader_(options.assets_dir) {
+namespace {
+
+LoaderOptions loader_options(const ViewerOptions& options, std::promise<void>& hold) {
+  LoaderOptions loader = options.loader;
+  if (options.hold_rigs_frames > 0) {
+    loader.preview_after_s = 0.0;
+    loader.rig_gate = hold.get_future().share();
+  }
+  return loader;
+}
+
+}  // namespace
+
+Viewer::Viewer(const ViewerOptions& options)
+    : options_(options), loader_(options.assets_dir, loader_options(options, rig_hold_)) {
   adaptive_ = options.adaptive_resolution && !options.script;  // scripts are exact: no adaptation
   if (options.script) script_.emplace(*options.script);
+  rig_hold_open_ = options.hold_rigs_frames <= 0;
 }
 
 Viewer::~Viewer() {
+  if (!rig_hold_open_) rig_hold_.set_value();  // the loader's worker may wait on it
   if (context_) vkDeviceWaitIdle(context_->device());
   if (renderer_) (void)finish_all();
   renderer_.reset();
@@ -78,8 +94,12 @@ Status Viewer::init() {
   ui_pass_ = std::move(*ui_pass);
 
   loader_.open(options_.open, nullptr);
-  if (script_ || options_.offscreen) {
-    // Nothing to show until the scene is there; a failing first scene is an error.
+  if (script_) {
+    if (!rig_hold_open_) {  // a script waits for the rigs: no hold
+      rig_hold_open_ = true;
+      rig_hold_.set_value();
+    }
+    // Nothing to show until the scene is there (rigs included); a failing first scene is an error.
     if (Status s = adopt(*loader_.wait()); !s) return s;
   }
   last_frame_ = last_pass_timing_ = std::chrono::steady_clock::now();
@@ -128,7 +148,13 @@ Status Viewer::adopt(Result<LoadedScene> loaded) {
   name_ = loaded->name.empty() ? "default" : loaded->name;
   if (!keep) core_->state().message.clear();
   if (window_) window_->set_title("proxygi — " + name_);
-  log_info("view: showing " + name_);
+  log_info("view: showing " + name_ + (loaded->preview ? " (without proxies while its rigs are fitted)" : ""));
+  if (loaded->preview) {
+    ++previews_;
+  } else if (previews_ > 0 && keep) {
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - options_.started).count();
+    std::fprintf(stderr, "view: proxies of %s on after %.2f s\n", name_.c_str(), seconds);
+  }
   return {};
 }
 
@@ -170,6 +196,7 @@ Status Viewer::run() {
     if (rendered_last_) ++frames_;
     if (options_.max_frames > 0 && frames_ >= options_.max_frames) break;
     if (script_ && script_->finished() && !loader_.busy() && screenshots_.empty()) break;
+    if (options_.quit_when_rigged && rendered_last_ && previews_ > 0 && !loader_.busy() && world_->proxy_count() > 0) break;
   }
   if (context_) vkDeviceWaitIdle(context_->device());
   if (Status s = write_state(); !s) return s;

@@ -5,6 +5,7 @@
 // (scene saving, screenshots, the state file for tests).
 #include <chrono>
 #include <deque>
+#include <future>
 #include <memory>
 #include <optional>
 #include <string>
@@ -62,6 +63,7 @@ class Viewer {
   std::optional<gpu::Image> offscreen_;
   ImGuiContext* imgui_ = nullptr;
   std::unique_ptr<UiPass> ui_pass_;
+  std::promise<void> rig_hold_;  // ViewerOptions::hold_rigs_frames (before loader_, which waits on it)
   SceneLoader loader_;
 
   std::string name_;  // what is shown
@@ -87,12 +89,16 @@ class Viewer {
   int adaptive_frames_ = 0;
   double adaptive_ms_ = 0.0;
   int frames_ = 0;           // frames the renderer drew
+  int previews_ = 0;         // scenes shown without rigs while they were fitted
+  int frames_without_proxies_ = 0;  // frames drawn with a preview world
+  bool rig_hold_open_ = true;
   bool rendered_last_ = false;
   bool first_frame_logged_ = false;
   std::chrono::steady_clock::time_point last_frame_;
   std::chrono::steady_clock::time_point last_pass_timing_;
   bool want_pass_timing_ = true;
   std::vector<PassTime> passes_;
+  std::string pass_clock_;  // how passes_ were measured (HUD)
   FrameTimes times_;
   std::string save_path_ = "viewer_scene.json";
   std::string open_path_;

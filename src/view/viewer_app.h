@@ -18,6 +18,7 @@
 #include <string>
 
 #include "base/result.h"
+#include "view/scene_loader.h"
 #include "view/script.h"
 
 namespace proxygi::view {
@@ -43,9 +44,15 @@ struct ViewerOptions {
   std::filesystem::path screenshot_dir = "screenshots";  // F12
   PngWriter write_png;
   std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
+  LoaderOptions loader;              // the preview while rigs are fitted (scene_loader.h)
+  // Tests: the first open's rig step waits until this many frames were drawn without proxies
+  // (a fit that is slow on demand); 0: no wait. Ignored with a script (it waits for the rigs).
+  int hold_rigs_frames = 0;
+  // Quit at the first frame drawn with proxies after the scene was shown without them.
+  bool quit_when_rigged = false;
 };
 
-// Runs until quit (window closed, Esc, script end, max_frames). Errors: no device, no window
+// Runs until quit (window closed, Esc, script end, max_frames, quit_when_rigged). Errors: no device, no window
 // (without --offscreen), a failing first scene, validation messages with validation on.
 Status run_viewer(const ViewerOptions& options);
 

@@ -32,6 +32,10 @@ std::string_view view_name(View view) {
     case View::normals: return "normals";
     case View::irradiance: return "irradiance (direct + indirect)";
     case View::receivers: return "receivers at 1/k";
+    case View::direct: return "direct only";
+    case View::indirect: return "indirect only";
+    case View::occlusion: return "occlusion (visible fraction)";
+    case View::heat_map: return "proxies per tile (heat map)";
   }
   return "?";
 }

@@ -58,9 +58,9 @@ struct FreeCamera {
 };
 
 // What the frame shows (V cycles): the final frame or one of its inputs (the composite pass's
-// gpu_layout::kDebugView* in the same order).
-enum class View { final, albedo, normals, irradiance, receivers };
-inline constexpr int kViewCount = 5;
+// gpu_layout::kDebugView* in the same order: shaders/shared/layouts.h says what each holds).
+enum class View { final, albedo, normals, irradiance, receivers, direct, indirect, occlusion, heat_map };
+inline constexpr int kViewCount = 9;
 std::string_view view_name(View view);
 
 struct Toggles {
@@ -70,7 +70,7 @@ struct Toggles {
   bool bones = false;   // B
   bool proxies = false; // O
   bool grid = false;    // G
-  bool wireframe = false;  // W (not drawn yet: shown as a toggle only)
+  bool wireframe = false;  // W: the characters' triangle edges (x-ray overlay)
   bool shells = false;     // each proxy's shadow sphere of influence (η·r) with its sphere
   std::string selected_bone;  // its spheres are highlighted (empty: none)
 };

@@ -93,6 +93,9 @@ Status Viewer::write_state() const {
   json["message"] = state.message;
   json["notice"] = state.notice;
   json["frames"] = frames_;
+  json["proxies"] = world_ ? world_->proxy_count() : 0;
+  json["previews"] = previews_;
+  json["frames_without_proxies"] = frames_without_proxies_;
   json["fps_mean"] = times_.mean() > 0.0 ? 1000.0 / times_.mean() : 0.0;
   json["frame_ms"] = {{"mean", times_.mean()}, {"min", times_.min()}, {"max", times_.max()}};
   json["display"] = {display_width_, display_height_};
@@ -100,7 +103,9 @@ Status Viewer::write_state() const {
   json["swapchain_recreations"] = swapchain_ ? swapchain_->recreations() : 0;
   json["validation_messages"] = context_ ? context_->validation_message_count() : 0;
   json["toggles"] = {{"ui", state.toggles.ui}, {"hud", state.toggles.hud}, {"help", state.toggles.help},
-                     {"bones", state.toggles.bones}, {"proxies", state.toggles.proxies}, {"grid", state.toggles.grid}};
+                     {"bones", state.toggles.bones}, {"proxies", state.toggles.proxies}, {"grid", state.toggles.grid},
+                     {"wireframe", state.toggles.wireframe}};
+  json["environment"] = scene_.environment.type == scene::Environment::Type::map ? scene_.environment.map_path : std::string("sky");
   std::ofstream out(options_.state_out);
   if (!out) return make_error(options_.state_out.string() + ": cannot write the viewer state");
   out << json.dump(2) << "\n";

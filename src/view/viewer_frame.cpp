@@ -12,10 +12,16 @@
 #include <GLFW/glfw3.h>
 
 #include "base/log.h"
+#include "shaders/shared/layouts.h"
 #include "view/viewer.h"
 
 namespace proxygi::view {
 namespace {
+
+// The viewer's views are the composite's debug views, in the same order.
+static_assert(int(View::receivers) == int(gpu_layout::kDebugViewReceivers) && int(View::direct) == int(gpu_layout::kDebugViewDirect) &&
+              int(View::occlusion) == int(gpu_layout::kDebugViewOcclusion) && int(View::heat_map) == int(gpu_layout::kDebugViewHeatMap) &&
+              kViewCount == int(gpu_layout::kDebugViewCount));
 
 constexpr double kScales[] = {1.0, 0.75, 0.5, 0.375, 0.25};  // internal / display resolution
 constexpr int kAdaptWindow = 16;                              // frames measured per decision
@@ -96,16 +102,28 @@ Status Viewer::render_into(const TargetImage& target) {
     if (Status s = finish_all(); !s) return s;  // measured to the frame's completion
     first_frame_logged_ = true;
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - options_.started).count();
-    std::fprintf(stderr, "view: first frame of %s after %.2f s\n", name_.c_str(), seconds);
+    std::fprintf(stderr, "view: first frame of %s after %.2f s%s\n", name_.c_str(), seconds,
+                 world_->proxy_count() == 0 && loader_.busy() ? " (without proxies: rigs are being fitted)" : "");
   }
   rendered_last_ = true;
+  if (world_->proxy_count() == 0 && loader_.busy() && ++frames_without_proxies_ >= options_.hold_rigs_frames &&
+      !rig_hold_open_) {
+    rig_hold_open_ = true;
+    rig_hold_.set_value();
+  }
   if (options_.show_ui && core_->state().toggles.ui && core_->state().toggles.hud && !script_ &&
       (want_pass_timing_ || std::chrono::steady_clock::now() - last_pass_timing_ > std::chrono::duration<double>(kPassTimingPeriodS))) {
     want_pass_timing_ = false;
     last_pass_timing_ = std::chrono::steady_clock::now();
     if (Status s = finish_all(); !s) return s;  // pass timing needs an idle ring
-    if (auto timings = renderer_->time_passes(core_->state().playback.frame())) {
+    if (auto timings = renderer_->time_passes(core_->state().playback.frame(), gpu::PassClock::timestamps_if_valid)) {
       passes_.clear();
+      char label[256];
+      if (timings->timestamps)
+        std::snprintf(label, sizeof label, "GPU timestamps, one submit (fenced: %.2f ms)", timings->frame_fenced_ms);
+      else
+        std::snprintf(label, sizeof label, "fenced CPU timings, one submit each (%s)", timings->note.c_str());
+      pass_clock_ = label;
       passes_.push_back({"prepare (CPU)", timings->cpu_prepare_ms});
       for (std::size_t p = 0; p < std::size_t(gpu::FramePass::count); ++p)
         if (timings->milliseconds[p] > 0.0) passes_.push_back({gpu::frame_pass_name(gpu::FramePass(p)), timings->milliseconds[p]});
@@ -137,6 +155,7 @@ HudInfo Viewer::hud_info() const {
   hud.present = swapchain_ ? present_name(swapchain_->present_mode()) : "offscreen";
   hud.swapchain_recreations = swapchain_ ? swapchain_->recreations() : 0;
   hud.passes = passes_;
+  hud.pass_clock = pass_clock_;
   hud.loading = loader_.progress();
   if (renderer_) {
     hud.proxies = world_->proxy_count();

@@ -78,7 +78,7 @@ void draw_hud(UiContext& ui, UiRequests& requests) {
     ImGui::TextUnformatted(clips.c_str());
   }
   if (!hud.passes.empty()) {
-    ImGui::TextUnformatted("passes (fenced CPU timings, one submit each; GPU timestamps not used):");
+    ImGui::Text("passes (%s):", hud.pass_clock.c_str());
     for (const PassTime& pass : hud.passes) ImGui::Text("  %-20s %7.2f ms", pass.name.c_str(), pass.ms);
   }
   if (ImGui::SmallButton("time passes")) requests.time_passes = true;
@@ -222,6 +222,52 @@ void draw_scene_panel(UiContext& ui, UiRequests& requests) {
   if (ImGui::Button("Save scene")) requests.save = *ui.save_path;
 }
 
+// The heat map's ramp, as upsample_composite.comp's heat_color (t = count / proxies).
+ImVec4 heat_color(float t) {
+  t = std::clamp(t, 0.0f, 1.0f);
+  auto band = [t](float center) { return std::clamp(1.5f - std::abs(4.0f * t - center), 0.0f, 1.0f); };
+  return {band(3.0f), band(2.0f), band(1.0f), 1.0f};
+}
+
+// What the chosen view shows, and the heat map's legend (0 .. all proxies of the frame).
+void draw_view_legend(UiContext& ui) {
+  const ViewerState& state = ui.core.state();
+  const settings::RenderSettings& render = state.settings;
+  const bool receiver_views = render.method != settings::ShadingMethod::vertex;
+  const bool tiles = render.method == settings::ShadingMethod::ambient_occlusion ||
+                     (render.method == settings::ShadingMethod::image_space && render.splat == settings::SplatMethod::compute);
+  const View view = state.view;
+  if (view == View::final || view == View::albedo || view == View::normals) return;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos({8, display.y - 100}, ImGuiCond_Always, {0.0f, 1.0f});
+  ImGui::SetNextWindowBgAlpha(0.7f);
+  ImGui::Begin("view legend", nullptr, ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_AlwaysAutoResize);
+  ImGui::Text("view: %s", std::string(view_name(view)).c_str());
+  if ((view == View::direct || view == View::indirect || view == View::occlusion) && !receiver_views) {
+    ImGui::TextUnformatted("not for the vertex method: the final frame is shown");
+  } else if (view == View::occlusion) {
+    ImGui::TextUnformatted("black: sphere of directions fully occluded, white: unoccluded");
+  } else if (view == View::heat_map && !tiles) {
+    ImGui::TextUnformatted("needs the tile lists of splat=compute (image method) or method=ao: the final frame is shown");
+  } else if (view == View::heat_map) {
+    const std::size_t proxies = ui.hud.proxies;
+    ImGui::Text("proxies kept per %dx%d-pixel tile (shadow eta %.3g), of %zu", 8 * render.receiver_scale,
+                8 * render.receiver_scale, render.shadow_eta, proxies);
+    ImDrawList& list = *ImGui::GetWindowDrawList();
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    constexpr int kSteps = 64;
+    constexpr float kWidth = 256.0f, kHeight = 14.0f;
+    for (int i = 0; i < kSteps; ++i) {
+      const float x0 = origin.x + kWidth * float(i) / kSteps, x1 = origin.x + kWidth * float(i + 1) / kSteps;
+      list.AddRectFilled({x0, origin.y}, {x1 + 0.5f, origin.y + kHeight},
+                         ImGui::GetColorU32(heat_color((float(i) + 0.5f) / kSteps)));
+    }
+    ImGui::Dummy({kWidth, kHeight});
+    ImGui::Text("left: 0, right: %zu (every proxy); tiles that keep none are untinted", proxies);
+  }
+  ImGui::End();
+}
+
 void draw_help() {
   ImGui::SetNextWindowPos({300, 60}, ImGuiCond_FirstUseEver);
   ImGui::Begin("Keys (F1)");
@@ -257,6 +303,7 @@ UiRequests draw_ui(UiContext& ui) {
     ImGui::Checkbox("proxies (O)", &state.toggles.proxies);
     ImGui::Checkbox("skeleton (B)", &state.toggles.bones);
     ImGui::Checkbox("grid (G)", &state.toggles.grid);
+    ImGui::Checkbox("wireframe (W, x-ray)", &state.toggles.wireframe);
     ImGui::Checkbox("influence shells (eta r)", &state.toggles.shells);
     // Selecting a joint highlights its spheres (the bones that carry proxies, per model).
     const std::string none = "(no joint selected)";
@@ -289,6 +336,7 @@ UiRequests draw_ui(UiContext& ui) {
     ImGui::End();
   }
   if (state.toggles.help) draw_help();
+  draw_view_legend(ui);
   return requests;
 }
 

@@ -45,7 +45,8 @@ struct HudInfo {
   std::uint32_t display_width = 0, display_height = 0, internal_width = 0, internal_height = 0;
   std::string present;  // "FIFO", "offscreen", ...
   int swapchain_recreations = 0;
-  std::vector<PassTime> passes;  // fenced CPU timings of one frame
+  std::vector<PassTime> passes;  // per-pass times of one frame (pass names of `bench frame`)
+  std::string pass_clock;        // how: GPU timestamps or fenced CPU timings (and why)
   std::string loading;           // progress line of a background load, empty when idle
   std::string title;
 };

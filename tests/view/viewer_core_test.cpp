@@ -3,12 +3,17 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <future>
+#include <thread>
 
 #include "scene/scene_defaults.h"
 #include "settings/fields.h"
+#include "view/scene_loader.h"
 #include "view/scene_open.h"
 #include "view/script.h"
 #include "view/viewer_core.h"
+#include "world/model_stage.h"
 
 namespace proxygi::view {
 namespace {
@@ -186,22 +191,100 @@ TEST(ViewerScript, ParsesEveryEventKindAndNamesTheBadOne) {
 namespace proxygi::view {
 namespace {
 
-TEST(ViewerOpen, ABareModelStandsOnTheDefaultStageAtItsOwnSize) {
-  auto scene = open_scene(PROXYGI_SOURCE_DIR "/assets/mannequin.glb", nullptr);
+TEST(ViewerOpen, ABareModelGetsRecordsStage) {
+  const std::filesystem::path assets = PROXYGI_SOURCE_DIR "/assets";
+  const std::string model = PROXYGI_SOURCE_DIR "/assets/mannequin.glb";
+  auto scene = open_scene(model, nullptr, assets);
   ASSERT_TRUE(scene.ok()) << scene.message();
+  // The stage `record MODEL.glb` renders (world::stage_scene), not a look-alike.
+  auto recorded = world::stage_scene(model, assets);
+  ASSERT_TRUE(recorded.ok()) << recorded.message();
+  EXPECT_TRUE(*scene == *recorded);
   ASSERT_EQ(scene->characters.size(), 1u);
-  const scene::Character& character = scene->characters[0];
-  EXPECT_EQ(character.transform.scale, glm::vec3(1.0f));  // its own size
-  EXPECT_GT(character.transform.translation.y, -0.5f);    // lifted or lowered onto y = 0
-  EXPECT_FALSE(character.path);
+  EXPECT_EQ(scene->characters[0].transform.scale, glm::vec3(1.0f));  // its own size
   EXPECT_TRUE(scene->ground.enabled);
   EXPECT_TRUE(std::holds_alternative<scene::FixedCamera>(scene->camera.kind));
-  EXPECT_GT(scene->output.frame_count, 1);  // the first clip's length
-  EXPECT_TRUE(open_scene("default", nullptr).ok());
-  EXPECT_TRUE(open_scene("crowd", nullptr).ok());
-  auto missing = open_scene("/no/such/model.glb", nullptr);
+  EXPECT_GT(scene->output.frame_count, 1);  // one pass of the first clip
+  // Standing on the ground over the clip: the lowest point of the motion is at y = 0.
+  auto world = world::World::load(*scene, {.assets_dir = assets, .load_rigs = false});
+  ASSERT_TRUE(world.ok()) << world.message();
+  auto bounds = world::bounds_over_time(**world, 0.0, scene::frame_time_s(scene->output, scene::last_frame(scene->output)), 24);
+  ASSERT_TRUE(bounds.ok()) << bounds.message();
+  EXPECT_NEAR(bounds->first.y, 0.0f, 1e-3f);
+
+  // "mannequin" and "builtin:mannequin" name the bundled figure, as in record and fit.
+  for (const char* name : {"mannequin", "builtin:mannequin"}) {
+    EXPECT_EQ(open_kind(name), OpenKind::model) << name;
+    auto mannequin = open_scene(name, nullptr, assets);
+    ASSERT_TRUE(mannequin.ok()) << name << ": " << mannequin.message();
+    auto expected = world::stage_scene("builtin:mannequin", assets);
+    ASSERT_TRUE(expected.ok()) << expected.message();
+    EXPECT_TRUE(*mannequin == *expected) << name;
+    EXPECT_EQ(mannequin->characters.at(0).model, "builtin:mannequin");
+  }
+  EXPECT_TRUE(open_scene("default", nullptr, assets).ok());
+  EXPECT_TRUE(open_scene("crowd", nullptr, assets).ok());
+  auto missing = open_scene("/no/such/model.glb", nullptr, assets);
   ASSERT_FALSE(missing.ok());
   EXPECT_NE(missing.message().find("model.glb"), std::string::npos);
+}
+
+TEST(ViewerOpen, AnEnvironmentFileReplacesTheCurrentScenesEnvironment) {
+  scene::Scene current = scene::crowd_scene();
+  const std::filesystem::path file = std::filesystem::path(PROXYGI_TEST_OUTPUT_DIR) / "view_open_environment.hdr";
+  std::filesystem::create_directories(file.parent_path());
+  std::ofstream(file) << "placeholder";  // open_scene only names it; the world reads it
+  for (const std::string& name : {file.string(), std::string("studio.EXR")}) EXPECT_EQ(open_kind(name), OpenKind::environment);
+  auto scene = open_scene(file.string(), &current, PROXYGI_SOURCE_DIR "/assets");
+  ASSERT_TRUE(scene.ok()) << scene.message();
+  EXPECT_EQ(scene->environment.type, scene::Environment::Type::map);
+  EXPECT_EQ(std::filesystem::path(scene->environment.map_path), std::filesystem::absolute(file));
+  scene->environment = current.environment;
+  EXPECT_TRUE(*scene == current);  // everything else is the shown scene
+}
+
+// A model without a cached rig: the loader offers the scene without proxies while the rig is
+// fitted (the fit held back by the gate), then the world with them, keeping the viewer's state.
+TEST(ViewerLoader, AModelShowsWithoutProxiesWhileItsRigIsFittedThenWithThem) {
+  const std::filesystem::path dir = std::filesystem::path(PROXYGI_TEST_OUTPUT_DIR) / "view_loader_preview";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path model = dir / "figure.glb";
+  std::filesystem::copy_file(PROXYGI_SOURCE_DIR "/assets/mannequin.glb", model);
+  std::promise<void> gate;
+  SceneLoader loader(PROXYGI_SOURCE_DIR "/assets", {.preview_after_s = 0.0, .rig_gate = gate.get_future().share()});
+  loader.open(model.string(), nullptr);
+  std::optional<Result<LoadedScene>> preview;
+  // Bounded so a broken loader fails instead of hanging (not a speed check).
+  for (int i = 0; i < 12000 && !preview; ++i) {
+    preview = loader.poll();
+    if (!preview) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  ASSERT_TRUE(preview && preview->ok()) << (preview ? preview->message() : "no preview");
+  EXPECT_TRUE((*preview)->preview);
+  EXPECT_FALSE((*preview)->keep_state);
+  EXPECT_EQ((*preview)->world->proxy_count(), 0u);
+  EXPECT_EQ((*preview)->world->instances().size(), 1u);
+  EXPECT_TRUE(loader.busy());
+  EXPECT_FALSE(loader.poll());  // offered once
+  EXPECT_NE(loader.progress().find("fitting"), std::string::npos) << loader.progress();
+  gate.set_value();
+  auto rigged = loader.wait();
+  ASSERT_TRUE(rigged && rigged->ok()) << (rigged ? rigged->message() : "nothing");
+  EXPECT_FALSE((*rigged)->preview);
+  EXPECT_TRUE((*rigged)->keep_state);  // replaces the preview shown
+  EXPECT_GT((*rigged)->world->proxy_count(), 0u);
+  EXPECT_FALSE(loader.busy());
+  EXPECT_TRUE(std::filesystem::exists(dir / "figure.proxies.json"));  // fitted and cached
+
+  // Now cached: a load that ends before the preview's wait offers no preview.
+  SceneLoader cached(PROXYGI_SOURCE_DIR "/assets", {.preview_after_s = 1e9});
+  cached.open(model.string(), nullptr);
+  auto direct = cached.wait();
+  ASSERT_TRUE(direct && direct->ok());
+  EXPECT_FALSE((*direct)->preview);
+  EXPECT_FALSE((*direct)->keep_state);
+  EXPECT_GT((*direct)->world->proxy_count(), 0u);
 }
 
 }  // namespace

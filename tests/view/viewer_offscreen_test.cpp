@@ -4,6 +4,8 @@
 // settings; a malformed model leaves the previous scene running and shows its error.
 #include <fstream>
 
+#include <stb/stb_image_write.h>
+
 #include "gpu/gpu_test_context.h"
 #include "scene/scene_defaults.h"
 #include "scene/scene_parse.h"
@@ -110,24 +112,108 @@ TEST_F(ViewerOffscreenTest, SavedSceneRecordsTheFrameOnScreen) {
 }
 
 TEST_F(ViewerOffscreenTest, ViewsShowTheFramesInputsAndCycleBackToTheFinalFrame) {
-  const auto run = run_viewer_script(R"({"events": [
-      {"t": 0, "key": "up"}, {"t": 0, "screenshot": "final.png", "ui": false},
-      {"t": 0, "key": "v"}, {"t": 0, "screenshot": "albedo.png", "ui": false},
-      {"t": 0, "key": "v"}, {"t": 0, "screenshot": "normals.png", "ui": false},
-      {"t": 0, "key": "v"}, {"t": 0, "screenshot": "irradiance.png", "ui": false},
-      {"t": 0, "key": "v"}, {"t": 0, "screenshot": "receivers.png", "ui": false},
-      {"t": 0, "key": "v"}, {"t": 0, "screenshot": "again.png", "ui": false}]})",
-                                     "default", kSize, kSize, true, "views");
+  const std::vector<std::string> views = {"albedo", "normals", "irradiance", "receivers", "direct",
+                                          "indirect", "occlusion", "heat_map"};
+  std::string events = R"({"t": 0, "key": "up"}, {"t": 0, "screenshot": "final.png", "ui": false})";
+  for (const std::string& view : views)
+    events += R"(, {"t": 0, "key": "v"}, {"t": 0, "screenshot": ")" + view + R"(.png", "ui": false})";
+  events += R"(, {"t": 0, "key": "v"}, {"t": 0, "screenshot": "again.png", "ui": false})";
+  const auto run = run_viewer_script(R"({"events": [)" + events + "]}", "default", kSize, kSize, true, "views");
   ASSERT_TRUE(run.status.ok()) << run.status.message();
-  ASSERT_EQ(run.shots.size(), 6u);
+  ASSERT_EQ(run.shots.size(), views.size() + 2);
   const auto& final_frame = run.shots.at("final.png").rgba;
-  for (const char* view : {"albedo.png", "normals.png", "irradiance.png", "receivers.png"})
-    EXPECT_GT(max_code_difference(run.shots.at(view).rgba, final_frame), 16) << view;
-  // Receivers at 1/4 (no upsampling) differ from the upsampled irradiance.
+  for (const std::string& view : views) {
+    if (view == "direct") continue;
+    EXPECT_GT(max_code_difference(run.shots.at(view + ".png").rgba, final_frame), 16) << view;
+  }
+  // Direct only lacks the bounce light; receivers at 1/4 (no upsampling) differ from the upsampled irradiance.
+  EXPECT_GT(max_code_difference(run.shots.at("direct.png").rgba, final_frame), 1);
   EXPECT_GT(max_code_difference(run.shots.at("receivers.png").rgba, run.shots.at("irradiance.png").rgba), 4);
   expect_within_one_code(run.shots.at("again.png"), record_frame(context(), scene::default_scene(), kSize, kSize, 10),
                          "views", "again");
   EXPECT_EQ(run.state["view"], "final");
+}
+
+// An .hdr or .exr dropped on the window (the open event a drop sends) becomes the shown scene's
+// environment: the frame is record's for the scene with that map. Both files are made here.
+TEST_F(ViewerOffscreenTest, ADroppedHdrOrExrSetsTheEnvironment) {
+  constexpr int kWidth = 32, kHeight = 16;
+  image::ImageF map(kWidth, kHeight);
+  std::vector<float> rgb;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      // Warm sky over a dark blue floor, brighter toward +u: direction matters.
+      const glm::vec3 value = y < kHeight / 2 ? glm::vec3(1.6f, 0.9f, 0.4f) * (0.5f + float(x) / kWidth)
+                                              : glm::vec3(0.05f, 0.1f, 0.3f);
+      map.at(x, y) = glm::vec4(value, 1.0f);
+      rgb.insert(rgb.end(), {value.r, value.g, value.b});
+    }
+  const auto dir = output_dir("drop_environment");
+  const auto hdr = dir / "made.hdr", exr = dir / "made.exr";
+  ASSERT_NE(stbi_write_hdr(hdr.c_str(), kWidth, kHeight, 3, rgb.data()), 0);
+  ASSERT_TRUE(image::write_exr(exr, map).ok());
+  const std::string script = R"({"events": [
+      {"t": 0, "key": "up"},
+      {"t": 0, "open": ")" + hdr.string() + R"("},
+      {"t": 0.05, "screenshot": "hdr.png", "ui": false},
+      {"t": 0.05, "open": ")" + exr.string() + R"("},
+      {"t": 0.1, "screenshot": "exr.png", "ui": false}]})";
+  const auto run = run_viewer_script(script, "default", kSize, kSize, true, "drop_environment");
+  ASSERT_TRUE(run.status.ok()) << run.status.message();
+  EXPECT_EQ(run.state["message"], "");
+  EXPECT_EQ(std::filesystem::path(run.state["environment"].get<std::string>()), std::filesystem::absolute(exr));
+  for (const auto& [file, shot] : {std::pair{hdr, "hdr.png"}, std::pair{exr, "exr.png"}}) {
+    scene::Scene scene = scene::default_scene();
+    scene.environment.type = scene::Environment::Type::map;
+    scene.environment.map_path = std::filesystem::absolute(file).string();
+    const auto expected = record_frame(context(), scene, kSize, kSize, 10);
+    expect_within_one_code(run.shots.at(shot), expected, "drop_environment", shot);
+    EXPECT_GT(max_code_difference(run.shots.at(shot).rgba, record_frame(context(), scene::default_scene(), kSize, kSize, 10)), 16)
+        << shot << ": the environment did not change";
+  }
+}
+
+// W draws the characters' triangle edges over the frame (a UI overlay: absent without the UI).
+TEST_F(ViewerOffscreenTest, WireframeKeyDrawsTheTriangleEdges) {
+  const auto run = run_viewer_script(R"({"events": [
+      {"t": 0, "key": "up"}, {"t": 0, "key": "h"},
+      {"t": 0, "screenshot": "before.png", "ui": true}, {"t": 0, "screenshot": "before_again.png", "ui": true},
+      {"t": 0, "key": "w"},
+      {"t": 0, "screenshot": "wire.png", "ui": true}, {"t": 0, "screenshot": "wire_hidden.png", "ui": false}]})",
+                                     "default", kSize * 2, kSize * 2, true, "wireframe");
+  ASSERT_TRUE(run.status.ok()) << run.status.message();
+  EXPECT_EQ(max_code_difference(run.shots.at("before.png").rgba, run.shots.at("before_again.png").rgba), 0);
+  EXPECT_GT(max_code_difference(run.shots.at("before.png").rgba, run.shots.at("wire.png").rgba), 16);
+  expect_within_one_code(run.shots.at("wire_hidden.png"), record_frame(context(), scene::default_scene(), kSize * 2, kSize * 2, 10),
+                         "wireframe", "wire_hidden");
+  EXPECT_TRUE(run.state["toggles"]["wireframe"]);
+}
+
+// A model without a cached rig is shown at once without proxies while its rig is fitted (the fit
+// held back until three such frames were drawn), then with them.
+TEST_F(ViewerOffscreenTest, AModelShowsBeforeItsRigFitCompletes) {
+  const auto dir = output_dir("before_fit");
+  std::filesystem::remove(dir / "figure.proxies.json");
+  std::filesystem::copy_file(PROXYGI_SOURCE_DIR "/assets/mannequin.glb", dir / "figure.glb",
+                             std::filesystem::copy_options::overwrite_existing);
+  ViewerOptions options;
+  options.open = (dir / "figure.glb").string();
+  options.assets_dir = PROXYGI_SOURCE_DIR "/assets";
+  options.offscreen = true;
+  options.width = options.height = 64;
+  options.validation = true;
+  options.hold_rigs_frames = 3;
+  options.quit_when_rigged = true;
+  options.state_out = dir / "state.json";
+  ASSERT_TRUE(run_viewer(options).ok());
+  std::ifstream in(options.state_out);
+  const auto state = nlohmann::json::parse(in, nullptr, false);
+  EXPECT_EQ(state["previews"], 1);
+  EXPECT_GE(state["frames_without_proxies"], 3);
+  EXPECT_GT(state["proxies"], 0);
+  EXPECT_GT(state["frames"], state["frames_without_proxies"]);
+  EXPECT_EQ(state["validation_messages"], 0);
+  EXPECT_TRUE(std::filesystem::exists(dir / "figure.proxies.json"));
 }
 
 }  // namespace
