@@ -17,7 +17,9 @@ json row_json(const study::ChartRow& row) {
           {"receiver_scale", row.receiver_scale}, {"upsampling", row.upsampling}, {"indirect", row.indirect},
           {"samples", row.samples},    {"ms_per_frame", row.milliseconds}, {"relative_mse", row.relative_mse},
           {"rmse", row.rmse},          {"ssim", row.ssim},       {"flip", row.flip},
-          {"default", row.is_default}};
+          {"character_relative_mse", row.character_relative_mse},
+          {"character_luminance_ratio", row.character_luminance_ratio},
+          {"ground_bounce", row.ground_bounce}, {"default", row.is_default}};
 }
 
 study::ChartRow row_from_json(const json& j) {
@@ -34,6 +36,9 @@ study::ChartRow row_from_json(const json& j) {
   row.rmse = j.at("rmse").get<double>();
   row.ssim = j.at("ssim").get<double>();
   row.flip = j.at("flip").get<double>();
+  row.character_relative_mse = j.at("character_relative_mse").get<double>();
+  row.character_luminance_ratio = j.at("character_luminance_ratio").get<double>();
+  row.ground_bounce = j.at("ground_bounce").get<bool>();
   row.is_default = j.at("default").get<bool>();
   return row;
 }
