@@ -31,6 +31,9 @@ std::vector<MethodSetting> method_grid(bool quick) {
         for (settings::IndirectOperator indirect : operators)
           grid.push_back({settings::ShadingMethod::image_space, order, scale, upsampling, indirect});
       }
+  for (settings::IndirectMethod bounce : {settings::IndirectMethod::vsgl, settings::IndirectMethod::none})
+    grid.push_back({settings::ShadingMethod::image_space, defaults.sh_order, defaults.receiver_scale, defaults.upsampling,
+                    defaults.indirect_operator, bounce});
   for (int order : orders)
     grid.push_back({settings::ShadingMethod::vertex, order, 1, settings::Upsampling::bilateral, defaults.indirect_operator});
   for (int scale : scales)
@@ -49,9 +52,13 @@ study::ChartRow describe_setting(const MethodSetting& setting, const std::string
       row.sh_order = setting.sh_order;
       row.receiver_scale = setting.receiver_scale;
       if (setting.receiver_scale > 1) row.upsampling = std::string(settings::name_of(setting.upsampling));
-      row.indirect = std::string(settings::name_of(setting.indirect));
+      // The bounce column: the proxy operator, or "vsgl" / "none" (render.indirect_method).
+      row.indirect = setting.indirect_method == settings::IndirectMethod::proxy
+                         ? std::string(settings::name_of(setting.indirect))
+                         : std::string(settings::name_of(setting.indirect_method));
       row.is_default = setting.sh_order == defaults.sh_order && setting.receiver_scale == defaults.receiver_scale &&
-                       setting.upsampling == defaults.upsampling && setting.indirect == defaults.indirect_operator;
+                       setting.upsampling == defaults.upsampling && setting.indirect == defaults.indirect_operator &&
+                       setting.indirect_method == defaults.indirect_method;
       break;
     case settings::ShadingMethod::vertex:
       row.method = "vertex";
@@ -81,6 +88,7 @@ Status run_raster_methods(gpu::Context& context, const study::ChartScene& chart,
     render.receiver_scale = setting.receiver_scale;
     render.upsampling = setting.upsampling;
     render.indirect_operator = setting.indirect;
+    render.indirect_method = setting.indirect_method;
     grid_settings.push_back(render);
   }
   auto renderer = gpu::SceneRenderer::create(context, std::shared_ptr<const world::World>(std::move(*world)),

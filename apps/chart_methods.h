@@ -20,12 +20,14 @@ struct MethodSetting {
   int receiver_scale = 4;
   settings::Upsampling upsampling = settings::Upsampling::bilateral;
   settings::IndirectOperator indirect = settings::IndirectOperator::averaged;
+  settings::IndirectMethod indirect_method = settings::IndirectMethod::proxy;  // vsgl, none: `indirect` unused
 };
 
 // The grid: the proxy method at SH orders 3–6 × receivers 1/1, 1/2, 1/4, 1/8 × bilateral
 // or bilinear (1/1 has nothing to upsample: bilateral only) × indirect point, averaged, exact; the
-// vertex baseline at orders 3–6; AO at 1/1 .. 1/8 (bilateral). `quick`: order 4, 1/4, averaged,
-// and each baseline once (for tests).
+// vertex baseline at orders 3–6; AO at 1/1 .. 1/8 (bilateral); at the default order and k the
+// other bounce methods, indirect_method vsgl (one light per character) and none (no bounce).
+// `quick`: order 4, 1/4, averaged, vsgl, none, and each baseline once (for tests).
 std::vector<MethodSetting> method_grid(bool quick);
 
 // The chart row's identity of a setting (times and errors still zero).

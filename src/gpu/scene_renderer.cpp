@@ -8,6 +8,7 @@
 #include "gpu/scene_renderer_parts.h"
 #include "gpu/transfer.h"
 #include "settings/fields.h"
+#include "shaders/shared/layouts.h"
 
 namespace proxygi::gpu {
 
@@ -145,6 +146,9 @@ Result<std::vector<DrawItem>> SceneRenderer::prepare(const FrameRequest& request
   if (state->instances.size() != instances_.size())
     return make_error("frame: the world state holds " + std::to_string(state->instances.size()) +
                       " characters, the renderer " + std::to_string(instances_.size()));
+  if (frame_->settings().indirect_method == settings::IndirectMethod::vsgl && instances_.size() > gpu_layout::kVsglMaxLights)
+    return make_error("render.indirect_method vsgl: " + std::to_string(instances_.size()) + " characters, at most " +
+                      std::to_string(gpu_layout::kVsglMaxLights) + " (one light each)");
   std::vector<DrawItem> draws;
   for (std::size_t index = 0; index < instances_.size(); ++index) {
     const anim::PoseBuffers& pose = state->instances[index].pose;
@@ -163,7 +167,7 @@ Result<std::vector<DrawItem>> SceneRenderer::prepare(const FrameRequest& request
       for (std::size_t i = 0; i < mesh.primitives.size(); ++i)
         draws.push_back({&mesh.primitives[i].world_positions, &mesh.primitives[i].world_normals, mesh.indices[i].get(),
                          mesh.index_counts[i], mesh.materials[i].base_color,
-                         mesh.uvs[i].get(), mesh.materials[i].texture});
+                         mesh.uvs[i].get(), mesh.materials[i].texture, int(index)});
     }
   }
   for (const auto& mesh : static_meshes_) draws.push_back(mesh.draw());

@@ -27,6 +27,10 @@
 #include "render/frame_tables.h"
 #include "render/shading.h"
 
+namespace proxygi::gpu_layout {
+struct VsglLight;
+}
+
 namespace proxygi::gpu {
 
 class Context;
@@ -97,6 +101,8 @@ class SoftGiFrame {
   Result<image::ImageF> read_receiver_normals() const;
   Result<std::vector<float>> read_log_occlusion() const; // receiver res × n²
   Result<image::ImageF> read_shaded() const;             // receiver res: rgb E_dir + E_ind, a depth
+  // The VSGL lights of the last frame (indirect_method vsgl; gpu_layout::VsglLight each), count first.
+  Result<std::vector<gpu_layout::VsglLight>> read_vsgl_lights() const;
   // G-buffer (display res): xyz world position, a eye depth (0 = background); xyz normal.
   Result<image::ImageF> read_gbuffer_positions() const;
   Result<image::ImageF> read_gbuffer_normals() const;
@@ -106,6 +112,7 @@ class SoftGiFrame {
   struct Targets {
     Image position_depth, normal, albedo, depth;
     Buffer receivers, log_occlusion, direct, indirect, shaded, irradiance, hdr, ldr;
+    Buffer vsgl_partials, vsgl_lights;  // VsglLightsPass outputs (small: allocated for every method)
   };
   struct Tables {
     Buffer log_table, visibility_table, optimal_linear, lighting_cube, exact_indirect;

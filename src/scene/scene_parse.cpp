@@ -230,6 +230,8 @@ Camera read_camera(const json& value, const std::string& path) {
 settings::RenderSettings read_render(const json& value, const std::string& path) {
   ObjectReader r(value, path);
   settings::RenderSettings s;
+  if (r.has("indirect"))  // the boolean of earlier versions
+    fail(r.field("indirect"), "replaced by \"indirect_method\": \"proxy\", \"vsgl\" or \"none\"");
   for (const settings::Field& field : settings::fields()) {
     const json* v = r.get(field.key);
     if (v == nullptr) continue;

@@ -7,7 +7,8 @@
 //   double total = sg_integral(light);                       // a A(λ)
 //   double e = sg_diffuse_irradiance(light, normal);          // ≈ ∫ G max(ω·n, 0) dω
 //
-// Every function is double precision and pure; the GLSL twin is shaders/vsgl_common.glsl.
+// Every function is double precision and pure; the GLSL twins are in shaders/vsgl_lights.comp
+// and shaders/indirect.comp (the vsgl variant).
 #include <glm/glm.hpp>
 
 namespace proxygi::sh {
