@@ -21,13 +21,15 @@ struct MethodSetting {
   settings::Upsampling upsampling = settings::Upsampling::bilateral;
   settings::IndirectOperator indirect = settings::IndirectOperator::averaged;
   settings::IndirectMethod indirect_method = settings::IndirectMethod::proxy;  // vsgl, none: `indirect` unused
+  int vsgl_lights = 1;  // vsgl: lights per character (render.vsgl_lights)
 };
 
 // The grid: the proxy method at SH orders 3–6 × receivers 1/1, 1/2, 1/4, 1/8 × bilateral
 // or bilinear (1/1 has nothing to upsample: bilateral only) × indirect point, averaged, exact; the
 // vertex baseline at orders 3–6; AO at 1/1 .. 1/8 (bilateral); at the default order and k the
-// other bounce methods, indirect_method vsgl (one light per character) and none (no bounce).
-// `quick`: order 4, 1/4, averaged, vsgl, none, and each baseline once (for tests).
+// other bounce methods, indirect_method vsgl (K = 1, 2, 4, 8 lights per character) and none (no
+// bounce). `quick`: order 4, 1/4, bilateral with the three operators, the four vsgl rows, none,
+// and each baseline once.
 std::vector<MethodSetting> method_grid(bool quick);
 
 // The chart row's identity of a setting (times and errors still zero).

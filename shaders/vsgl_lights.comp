@@ -1,6 +1,7 @@
 #version 460
 // VSGL lights (render.indirect_method vsgl, frame step 6 before indirect.comp:vsgl), two stages:
-//   kVsglStageSums: one invocation per triangle of one character draw: a diffuse VPL at the
+//   kVsglStageSums: one invocation per triangle of one character draw (or of one index range of
+//     it, render.vsgl_lights > 1): a diffuse VPL at the
 //     centroid x with normal n = normalize(n0 + n1 + n2), area A and flux Φ = albedo ·
 //     max(E(n), 0) · A (E = Σ L̃_i y_i(n), unshadowed); the workgroup's VPLs are summed in a fixed
 //     tree (deterministic) into VsglPartial, positions relative to the group's first centroid.
@@ -34,9 +35,9 @@ float sg_area(float sharpness) {
 }
 
 void sum_triangles() {
-  uint triangle = gl_GlobalInvocationID.x;
+  uint triangle = push.first_triangle + gl_GlobalInvocationID.x;
   uint local = gl_LocalInvocationID.x;
-  bool valid = triangle < push.triangle_count;
+  bool valid = gl_GlobalInvocationID.x < push.triangle_count;
   vec3 center = vec3(0.0);
   vec4 a = vec4(0.0), b = vec4(0.0), c = vec4(0.0);
   if (valid) {
@@ -88,7 +89,7 @@ void sum_triangles() {
 void fit_light() {
   uint light = gl_GlobalInvocationID.x;
   if (light == 0u) light_count = uvec4(push.light_count, 0u, 0u, 0u);
-  if (light >= kVsglMaxLights) return;
+  if (light >= kVsglMaxLights) return;  // (several workgroups of kVsglGroupSize lights)
   bool first = true;
   vec3 origin = vec3(0.0);
   vec4 a = vec4(0.0), b = vec4(0.0), c = vec4(0.0);

@@ -152,12 +152,13 @@ struct Receiver {
 };
 
 // ---- VSGL bounce light (render.indirect_method vsgl; sh/vsgl.h is the CPU twin) ----
-// vsgl_lights.comp stage 0: each character draw's triangles are diffuse VPLs (centroid, summed
+// vsgl_lights.comp stage 0: each character draw's triangles (or one of render.vsgl_lights index
+// ranges of them, each its own light) are diffuse VPLs (centroid, summed
 // vertex normals, area, flux = base color × max(E(N), 0) × area, E from irradiance_sh), summed per
 // workgroup of kVsglGroupSize triangles into one partial (positions relative to the group's
 // first centroid); stage 1: one invocation per light sums its partials in order (shifted to the
 // origin of its first) and fits the VSGL. indirect.comp:vsgl evaluates the lights per receiver.
-PROXYGI_CONST(uint, kVsglMaxLights, 64u);       // characters per frame with indirect_method vsgl
+PROXYGI_CONST(uint, kVsglMaxLights, 256u);      // characters × render.vsgl_lights per frame
 PROXYGI_CONST(uint, kVsglGroupSize, 64u);       // triangles per partial
 PROXYGI_CONST(uint, kVsglMaxPartials, 16384u);  // character triangles beyond 16384 × 64 are skipped
 PROXYGI_CONST(float, kVsglDiffuseSharpness, 2.0);        // λ_d (sh::kDiffuseLobeSharpness)
@@ -187,7 +188,7 @@ struct VsglLightsPush {
   uint light;            // stage 0: the draw's light index
   uint partial_count;    // stage 1: partials written
   uint light_count;      // stage 1: lights to fit (≤ kVsglMaxLights)
-  uint padding0;
+  uint first_triangle;   // stage 0: the draw's first triangle of this dispatch
   uint padding1;
 };
 

@@ -146,9 +146,12 @@ Result<std::vector<DrawItem>> SceneRenderer::prepare(const FrameRequest& request
   if (state->instances.size() != instances_.size())
     return make_error("frame: the world state holds " + std::to_string(state->instances.size()) +
                       " characters, the renderer " + std::to_string(instances_.size()));
-  if (frame_->settings().indirect_method == settings::IndirectMethod::vsgl && instances_.size() > gpu_layout::kVsglMaxLights)
-    return make_error("render.indirect_method vsgl: " + std::to_string(instances_.size()) + " characters, at most " +
-                      std::to_string(gpu_layout::kVsglMaxLights) + " (one light each)");
+  const settings::RenderSettings& render = frame_->settings();
+  if (render.indirect_method == settings::IndirectMethod::vsgl &&
+      instances_.size() * std::size_t(render.vsgl_lights) > gpu_layout::kVsglMaxLights)
+    return make_error("render.indirect_method vsgl: " + std::to_string(instances_.size()) + " characters × " +
+                      std::to_string(render.vsgl_lights) + " lights, at most " +
+                      std::to_string(gpu_layout::kVsglMaxLights) + " lights");
   std::vector<DrawItem> draws;
   for (std::size_t index = 0; index < instances_.size(); ++index) {
     const anim::PoseBuffers& pose = state->instances[index].pose;

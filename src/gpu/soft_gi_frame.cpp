@@ -185,7 +185,8 @@ void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot_index
       break;
     case FramePass::indirect:
       if (passes_.vsgl_lights)
-        run(*passes_.vsgl_lights, VsglLightsPass::Inputs{&slot.constants, draws},
+        run(*passes_.vsgl_lights,
+            VsglLightsPass::Inputs{&slot.constants, draws, std::uint32_t(config_.render.vsgl_lights)},
             VsglLightsPass::Outputs{&t.vsgl_partials, &t.vsgl_lights});
       run(*passes_.indirect,
           IndirectPass::Inputs{&slot.constants, &t.receivers, &slot.proxies, &tables_.visibility_table, &t.direct,

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
-#include "shaders/shared/layouts.h"
 #include "sh/spherical_gaussian.h"
 #include "sh/vsgl.h"
+#include "shaders/shared/layouts.h"
 
 namespace proxygi::gpu {
 
@@ -18,12 +18,10 @@ std::size_t VsglLightsPass::partials_bytes() { return sizeof(VsglPartial) * kVsg
 std::size_t VsglLightsPass::lights_bytes() { return sizeof(glm::uvec4) + sizeof(VsglLight) * kVsglMaxLights; }
 
 Result<VsglLightsPass> VsglLightsPass::create(const Context& context) {
-  const ComputeBinding bindings[] = {{kVsglBindFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
-                                     {kVsglBindPositions, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                                     {kVsglBindNormals, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                                     {kVsglBindIndices, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                                     {kVsglBindPartials, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                                     {kVsglBindLights, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+  const ComputeBinding bindings[] = {
+      {kVsglBindFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},    {kVsglBindPositions, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {kVsglBindNormals, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},  {kVsglBindIndices, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {kVsglBindPartials, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {kVsglBindLights, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
   auto pipeline = make_compute_pipeline(context, "vsgl_lights.comp", bindings, sizeof(VsglLightsPush));
   if (!pipeline) return pipeline.error();
   VsglLightsPass pass;
@@ -46,29 +44,37 @@ void VsglLightsPass::record(const Context& context, VkCommandBuffer commands, co
                             const Outputs& out) const {
   pipeline_.bind(commands);
   std::uint32_t partial = 0, light_count = 0;
+  const std::uint32_t per_sender = std::max(in.lights_per_sender, 1u);
   for (const DrawItem& draw : in.draws) {
-    if (draw.vsgl_light < 0 || std::uint32_t(draw.vsgl_light) >= kVsglMaxLights) continue;
-    const std::uint32_t triangles = draw.index_count / 3;
-    const std::uint32_t groups = group_count(triangles, kVsglGroupSize);
-    if (groups == 0 || partial + groups > kVsglMaxPartials) continue;  // documented capacity
-    DescriptorPush()
-        .uniform_buffer(kVsglBindFrame, *in.constants)
-        .storage_buffer(kVsglBindPositions, *draw.positions)
-        .storage_buffer(kVsglBindNormals, *draw.normals)
-        .storage_buffer(kVsglBindIndices, *draw.indices)
-        .storage_buffer(kVsglBindPartials, *out.partials)
-        .storage_buffer(kVsglBindLights, *out.lights)
-        .push(context, commands, pipeline_);
-    VsglLightsPush push{};
-    push.base_color = draw.base_color;
-    push.stage = kVsglStageSums;
-    push.triangle_count = triangles;
-    push.partial_offset = partial;
-    push.light = std::uint32_t(draw.vsgl_light);
-    pipeline_.push_constants(commands, &push, sizeof(push));
-    vkCmdDispatch(commands, groups, 1, 1);
-    partial += groups;
-    light_count = std::max(light_count, std::uint32_t(draw.vsgl_light) + 1);
+    if (draw.vsgl_light < 0) continue;
+    const std::uint32_t total = draw.index_count / 3;
+    for (std::uint32_t range = 0; range < per_sender; ++range) {
+      const std::uint32_t light = std::uint32_t(draw.vsgl_light) * per_sender + range;
+      const std::uint32_t first = std::uint32_t(std::uint64_t(range) * total / per_sender);
+      const std::uint32_t triangles = std::uint32_t(std::uint64_t(range + 1) * total / per_sender) - first;
+      const std::uint32_t groups = group_count(triangles, kVsglGroupSize);
+      if (light >= kVsglMaxLights || groups == 0 || partial + groups > kVsglMaxPartials)
+        continue;  // documented capacity
+      DescriptorPush()
+          .uniform_buffer(kVsglBindFrame, *in.constants)
+          .storage_buffer(kVsglBindPositions, *draw.positions)
+          .storage_buffer(kVsglBindNormals, *draw.normals)
+          .storage_buffer(kVsglBindIndices, *draw.indices)
+          .storage_buffer(kVsglBindPartials, *out.partials)
+          .storage_buffer(kVsglBindLights, *out.lights)
+          .push(context, commands, pipeline_);
+      VsglLightsPush push{};
+      push.base_color = draw.base_color;
+      push.stage = kVsglStageSums;
+      push.triangle_count = triangles;
+      push.partial_offset = partial;
+      push.light = light;
+      push.first_triangle = first;
+      pipeline_.push_constants(commands, &push, sizeof(push));
+      vkCmdDispatch(commands, groups, 1, 1);
+      partial += groups;
+      light_count = std::max(light_count, light + 1);
+    }
   }
   PassBarriers fit;  // the sums, then the fit reading them
   const ResourceAccess summed[] = {writes(out.partials)};

@@ -113,6 +113,9 @@ const std::vector<Field>& table() {
                         kSplatChoices),
       choice<&S::indirect_method>("indirect_method", "bounce light: proxy (spheres), vsgl (SG lights) or none",
                                   kNeedPipelines | kNeedConstants, kIndirectMethodChoices),
+      integer<&S::vsgl_lights>("vsgl_lights", "vsgl: lights per character (its triangles in as many index ranges)",
+                               kNeedConstants, kVsglLightsPerCharacter.front(), kVsglLightsPerCharacter.back(),
+                               kVsglLightsPerCharacter),
       choice<&S::tonemap>("tonemap", "display curve", kNeedConstants, kTonemapChoices),
       real<&S::exposure_ev>("exposure_ev", "exposure in stops before the tonemap", kNeedConstants, -kInfinity, -8.0, 8.0),
   };
@@ -123,10 +126,10 @@ const std::vector<Field>& table() {
 // new member stops the build here until its row is added and it is named below too.
 [[maybe_unused]] void every_member_has_a_row(const RenderSettings& settings) {
   const auto& [method, sh_order, receiver_scale, shadow_eta, indirect_eta, sh_window, indirect_operator, exponential,
-               hyb_tau, upsampling, bilateral_depth_epsilon, splat, indirect_method, tonemap, exposure_ev] = settings;
+               hyb_tau, upsampling, bilateral_depth_epsilon, splat, indirect_method, vsgl_lights, tonemap, exposure_ev] = settings;
   (void)method, (void)sh_order, (void)receiver_scale, (void)shadow_eta, (void)indirect_eta, (void)sh_window;
   (void)indirect_operator, (void)exponential, (void)hyb_tau, (void)upsampling, (void)bilateral_depth_epsilon;
-  (void)splat, (void)indirect_method, (void)tonemap, (void)exposure_ev;
+  (void)splat, (void)indirect_method, (void)vsgl_lights, (void)tonemap, (void)exposure_ev;
 }
 
 std::string show(double value) {

@@ -45,6 +45,8 @@ enum class Tonemap { aces, reinhard, clamp };
 inline constexpr int kMinShOrder = 3;  // SH order n: n bands, n² coefficients
 inline constexpr int kMaxShOrder = 6;
 inline constexpr std::array<int, 4> kReceiverScales = {1, 2, 4, 8};  // k: receivers at 1/k resolution
+// VSGL lights per character (indirect_method vsgl): its triangles split into this many index ranges.
+inline constexpr std::array<int, 4> kVsglLightsPerCharacter = {1, 2, 4, 8};
 
 struct RenderSettings {
   ShadingMethod method = ShadingMethod::image_space;
@@ -60,6 +62,7 @@ struct RenderSettings {
   float bilateral_depth_epsilon = 0.05f;  // ε of eq. 11, meters of eye depth, > 0
   SplatMethod splat = SplatMethod::compute;  // the gather measured faster on lavapipe (README)
   IndirectMethod indirect_method = IndirectMethod::proxy;
+  int vsgl_lights = 1;          // VSGL lights per character, one of kVsglLightsPerCharacter
   Tonemap tonemap = Tonemap::aces;
   float exposure_ev = 0.0f;     // radiance × 2^exposure_ev before the tonemap
   bool operator==(const RenderSettings&) const = default;

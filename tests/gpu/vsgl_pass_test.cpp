@@ -1,5 +1,5 @@
 // render.indirect_method vsgl on the GPU (vsgl_lights.comp, indirect.comp:vsgl) against its CPU
-// twin (sh/vsgl.h): two sender meshes (each its own light) over a ground plane under a
+// twin (sh/vsgl.h): two sender meshes (each K = 1 or 4 lights) over a ground plane under a
 // directional sky. The fitted lights match the CPU fit of the same triangles, and the indirect
 // irradiance at sample receivers matches sh::vsgl_irradiance at the GPU's receivers (relative
 // error ≤ 1e-3, as the other passes' twins). Validation layer on, no message.
@@ -51,12 +51,15 @@ sh::RgbSh sky() {
   return lighting;
 }
 
-// The CPU twin of vsgl_lights.comp: the same VPLs from the same triangles, summed relative to
-// the first triangle's centroid, and fitted.
-std::optional<sh::Vsgl> cpu_light(const Mesh& mesh, const render::FrameTables& tables) {
+// The CPU twin of vsgl_lights.comp: the same VPLs from the same triangles (index range `range`
+// of `ranges`), summed relative to the range's first centroid, and fitted.
+std::optional<sh::Vsgl> cpu_light(const Mesh& mesh, const render::FrameTables& tables, std::size_t range,
+                                  std::size_t ranges) {
   sh::VsglSums sums;
   glm::dvec3 origin(0.0);
-  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+  const std::size_t triangles = mesh.indices.size() / 3;
+  const std::size_t first = range * triangles / ranges, last = (range + 1) * triangles / ranges;
+  for (std::size_t t = 3 * first; t < 3 * last; t += 3) {
     const glm::dvec3 p0(mesh.positions[mesh.indices[t]]), p1(mesh.positions[mesh.indices[t + 1]]),
         p2(mesh.positions[mesh.indices[t + 2]]);
     const glm::dvec3 summed = glm::dvec3(mesh.normals[mesh.indices[t]]) + glm::dvec3(mesh.normals[mesh.indices[t + 1]]) +
@@ -64,7 +67,7 @@ std::optional<sh::Vsgl> cpu_light(const Mesh& mesh, const render::FrameTables& t
     sh::VirtualPointLight vpl;
     vpl.position = (p0 + p1 + p2) / 3.0;
     vpl.normal = glm::normalize(summed);
-    if (t == 0) origin = vpl.position;
+    if (t == 3 * first) origin = vpl.position;
     const double area = 0.5 * glm::length(glm::cross(p1 - p0, p2 - p0));
     double basis[9];
     sh::evaluate_basis<3>(vpl.normal, basis);
@@ -78,12 +81,17 @@ std::optional<sh::Vsgl> cpu_light(const Mesh& mesh, const render::FrameTables& t
   return sh::fit_vsgl(sums, origin);
 }
 
-TEST_F(VsglPassTest, LightsAndIrradianceMatchTheCpuTwin) {
+// K = render.vsgl_lights lights per sender: 1 (the default) and 4 (index ranges).
+class VsglPassLights : public VsglPassTest, public ::testing::WithParamInterface<int> {};
+
+TEST_P(VsglPassLights, LightsAndIrradianceMatchTheCpuTwin) {
+  const int per_sender = GetParam();
   FrameConfig config;
   config.width = config.height = 64;
   config.frames_in_flight = 1;
   config.render.receiver_scale = 2;
   config.render.indirect_method = settings::IndirectMethod::vsgl;
+  config.render.vsgl_lights = per_sender;
   const render::FrameTables tables = render::make_frame_tables(sky(), config.render);
   const testing::GroundMesh ground = testing::ground_plane(20.0f, 4);
   // 40 × 40 × 2 triangles: more than one workgroup of partials per light.
@@ -114,10 +122,11 @@ TEST_F(VsglPassTest, LightsAndIrradianceMatchTheCpuTwin) {
 
   auto lights = (*frame)->read_vsgl_lights();
   ASSERT_TRUE(lights.ok());
-  ASSERT_EQ(lights->size(), 2u);
+  ASSERT_EQ(lights->size(), 2u * std::size_t(per_sender));
   std::vector<sh::Vsgl> cpu;
-  for (std::size_t k = 0; k < 2; ++k) {
-    auto expected = cpu_light(senders[k], tables);
+  for (std::size_t k = 0; k < lights->size(); ++k) {
+    auto expected = cpu_light(senders[k / std::size_t(per_sender)], tables, k % std::size_t(per_sender),
+                              std::size_t(per_sender));
     ASSERT_TRUE(expected);
     cpu.push_back(*expected);
     const gpu_layout::VsglLight& gpu = (*lights)[k];
@@ -155,6 +164,8 @@ TEST_F(VsglPassTest, LightsAndIrradianceMatchTheCpuTwin) {
   EXPECT_GE(checked, 200);
   EXPECT_GE(lit, 100) << "the samples must include receivers lit by the lights";
 }
+
+INSTANTIATE_TEST_SUITE_P(PerSender, VsglPassLights, ::testing::Values(1, 4));
 
 }  // namespace
 }  // namespace proxygi::gpu
