@@ -1,10 +1,11 @@
 #version 460
 // VSGL lights (render.indirect_method vsgl, frame step 6 before indirect.comp:vsgl), two stages:
-//   kVsglStageSums: one invocation per triangle of one character draw (or of one index range of
-//     it, render.vsgl_lights > 1): a diffuse VPL at the
+//   kVsglStageSums: kVsglTrianglesPerInvocation triangles per invocation of one character draw
+//     (or of one index range of it, render.vsgl_lights > 1), each a diffuse VPL at the
 //     centroid x with normal n = normalize(n0 + n1 + n2), area A and flux Φ = albedo ·
-//     max(E(n), 0) · A (E = Σ L̃_i y_i(n), unshadowed); the workgroup's VPLs are summed in a fixed
-//     tree (deterministic) into VsglPartial, positions relative to the group's first centroid.
+//     max(E(n), 0) · A (E = Σ L̃_i y_i(n), unshadowed); the workgroup's VPLs are summed serially
+//     per invocation, then in a fixed tree (deterministic) into VsglPartial, positions relative
+//     to the group's first centroid.
 //   kVsglStageFit: invocation k sums the partials of light k in order, each shifted to the origin
 //     of the first, and fits ξ_v, λ_v, c_v, μ_v, σ_v² (sh::fit_vsgl).
 // CPU twin: sh::add_light / sh::fit_vsgl (src/sh/vsgl.h).
@@ -34,35 +35,44 @@ float sg_area(float sharpness) {
   return 2.0 * kPi * (1.0 - exp(-2.0 * sharpness)) / sharpness;
 }
 
+// One triangle as a VPL: centroid, unit normal, flux (rgb).
+void triangle_light(uint triangle, out vec3 center, out vec3 normal, out vec3 flux) {
+  uint i0 = indices[3u * triangle], i1 = indices[3u * triangle + 1u], i2 = indices[3u * triangle + 2u];
+  vec3 p0 = positions[i0].xyz, p1 = positions[i1].xyz, p2 = positions[i2].xyz;
+  vec3 face = cross(p1 - p0, p2 - p0);
+  float area = 0.5 * length(face);
+  vec3 summed = normals[i0].xyz + normals[i1].xyz + normals[i2].xyz;
+  normal = length(summed) > 0.0 ? normalize(summed) : (area > 0.0 ? face / (2.0 * area) : vec3(0.0, 1.0, 0.0));
+  center = (p0 + p1 + p2) / 3.0;
+  float basis[9];
+  sh_eval_basis_3(normal, basis);
+  vec3 irradiance = vec3(0.0);
+  for (int i = 0; i < 9; ++i)
+    irradiance += basis[i] * vec3(frame.irradiance_sh[i].x, frame.irradiance_sh[9 + i].x, frame.irradiance_sh[18 + i].x);
+  flux = push.base_color.rgb * max(irradiance, vec3(0.0)) * area;
+}
+
 void sum_triangles() {
-  uint triangle = push.first_triangle + gl_GlobalInvocationID.x;
+  // The workgroup's triangles: kVsglTrianglesPerInvocation per invocation, strided by the group
+  // size, summed serially (few barriers: lavapipe pays for each), then one tree over the group.
   uint local = gl_LocalInvocationID.x;
-  bool valid = gl_GlobalInvocationID.x < push.triangle_count;
-  vec3 center = vec3(0.0);
-  vec4 a = vec4(0.0), b = vec4(0.0), c = vec4(0.0);
-  if (valid) {
-    uint i0 = indices[3u * triangle], i1 = indices[3u * triangle + 1u], i2 = indices[3u * triangle + 2u];
-    vec3 p0 = positions[i0].xyz, p1 = positions[i1].xyz, p2 = positions[i2].xyz;
-    vec3 face = cross(p1 - p0, p2 - p0);
-    float area = 0.5 * length(face);
-    vec3 summed = normals[i0].xyz + normals[i1].xyz + normals[i2].xyz;
-    vec3 normal = length(summed) > 0.0 ? normalize(summed) : (area > 0.0 ? face / (2.0 * area) : vec3(0.0, 1.0, 0.0));
-    center = (p0 + p1 + p2) / 3.0;
-    float basis[9];
-    sh_eval_basis_3(normal, basis);
-    vec3 irradiance = vec3(0.0);
-    for (int i = 0; i < 9; ++i)
-      irradiance += basis[i] * vec3(frame.irradiance_sh[i].x, frame.irradiance_sh[9 + i].x, frame.irradiance_sh[18 + i].x);
-    vec3 flux = push.base_color.rgb * max(irradiance, vec3(0.0)) * area;
-    float w = dot(flux, kLuminance);
-    a = vec4(w, w * (kVsglDiffuseSharpness / (kVsglDiffuseSharpness + 1.0)) * normal);
-    c = vec4(flux, 0.0);
+  uint group_first = gl_WorkGroupID.x * kVsglGroupSize * kVsglTrianglesPerInvocation;
+  if (local == 0u) {  // a dispatched group always has its first triangle
+    vec3 normal, flux;
+    triangle_light(push.first_triangle + group_first, shared_origin, normal, flux);
   }
-  if (local == 0u) shared_origin = center;  // invocation 0 of a dispatched group always has a triangle
   barrier();
-  if (valid) {
+  vec4 a = vec4(0.0), b = vec4(0.0), c = vec4(0.0);
+  for (uint j = 0u; j < kVsglTrianglesPerInvocation; ++j) {
+    uint t = group_first + j * kVsglGroupSize + local;
+    if (t >= push.triangle_count) break;
+    vec3 center, normal, flux;
+    triangle_light(push.first_triangle + t, center, normal, flux);
+    float w = dot(flux, kLuminance);
     vec3 relative = center - shared_origin;
-    b = vec4(a.x * relative, a.x * dot(relative, relative));
+    a += vec4(w, w * (kVsglDiffuseSharpness / (kVsglDiffuseSharpness + 1.0)) * normal);
+    b += vec4(w * relative, w * dot(relative, relative));
+    c += vec4(flux, 0.0);
   }
   shared_a[local] = a;
   shared_b[local] = b;

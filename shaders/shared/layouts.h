@@ -153,14 +153,15 @@ struct Receiver {
 
 // ---- VSGL bounce light (render.indirect_method vsgl; sh/vsgl.h is the CPU twin) ----
 // vsgl_lights.comp stage 0: each character draw's triangles (or one of render.vsgl_lights index
-// ranges of them, each its own light) are diffuse VPLs (centroid, summed
-// vertex normals, area, flux = base color × max(E(N), 0) × area, E from irradiance_sh), summed per
-// workgroup of kVsglGroupSize triangles into one partial (positions relative to the group's
-// first centroid); stage 1: one invocation per light sums its partials in order (shifted to the
+// ranges of them, each its own light) are diffuse VPLs (centroid, summed vertex normals, area,
+// flux = base color × max(E(N), 0) × area, E from irradiance_sh), summed per workgroup
+// (kVsglGroupSize × kVsglTrianglesPerInvocation triangles) into one partial (positions relative
+// to the group's first centroid); stage 1: one invocation per light sums its partials in order (shifted to the
 // origin of its first) and fits the VSGL. indirect.comp:vsgl evaluates the lights per receiver.
 PROXYGI_CONST(uint, kVsglMaxLights, 256u);      // characters × render.vsgl_lights per frame
-PROXYGI_CONST(uint, kVsglGroupSize, 64u);       // triangles per partial
-PROXYGI_CONST(uint, kVsglMaxPartials, 16384u);  // character triangles beyond 16384 × 64 are skipped
+PROXYGI_CONST(uint, kVsglGroupSize, 64u);       // invocations per workgroup (and lights per fit group)
+PROXYGI_CONST(uint, kVsglTrianglesPerInvocation, 16u);  // a partial sums 64 × 16 triangles
+PROXYGI_CONST(uint, kVsglMaxPartials, 16384u);  // character triangles beyond 16384 × 1024 are skipped
 PROXYGI_CONST(float, kVsglDiffuseSharpness, 2.0);        // λ_d (sh::kDiffuseLobeSharpness)
 PROXYGI_CONST(float, kVsglMinRelativeVariance, 1e-6);    // sh::kVsglMinRelativeVariance
 PROXYGI_CONST(uint, kVsglStageSums, 0u);

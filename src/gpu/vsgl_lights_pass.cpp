@@ -52,7 +52,7 @@ void VsglLightsPass::record(const Context& context, VkCommandBuffer commands, co
       const std::uint32_t light = std::uint32_t(draw.vsgl_light) * per_sender + range;
       const std::uint32_t first = std::uint32_t(std::uint64_t(range) * total / per_sender);
       const std::uint32_t triangles = std::uint32_t(std::uint64_t(range + 1) * total / per_sender) - first;
-      const std::uint32_t groups = group_count(triangles, kVsglGroupSize);
+      const std::uint32_t groups = group_count(triangles, kVsglGroupSize * kVsglTrianglesPerInvocation);
       if (light >= kVsglMaxLights || groups == 0 || partial + groups > kVsglMaxPartials)
         continue;  // documented capacity
       DescriptorPush()
