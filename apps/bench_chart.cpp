@@ -240,9 +240,9 @@ void add_bench_chart_command(CLI::App& bench, CommandRunner& runner) {
   command->add_option("--reference-spp", args->reference_spp, "Samples per pixel of the references")
       ->check(CLI::Range(1, settings::kMaxSamplesPerPixel))
       ->capture_default_str();
-  command->add_option("--scenes", args->scenes, "Only these scenes (default, CesiumMan, Fox, RiggedSimple)")
+  command->add_option("--scenes", args->scenes, "Only these scenes (default, CesiumMan, Fox, RiggedSimple; pair only when named)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"default", "CesiumMan", "Fox", "RiggedSimple"}));
+      ->check(CLI::IsMember({"default", "CesiumMan", "Fox", "RiggedSimple", "pair"}));
   command->add_option("--shared", args->shared, "Folder holding assets/gltf with the sample characters")
       ->capture_default_str();
   command->add_option("--lighting", args->lighting, "Reference lighting: sh (order 6) or full")

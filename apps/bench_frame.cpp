@@ -1,4 +1,5 @@
-// proxygi bench frame [--json] [--indirect-operator point|averaged|exact]: milliseconds per pass
+// proxygi bench frame [--json] [--indirect-operator point|averaged|exact] [--indirect-method
+// proxy|vsgl|none]: milliseconds per pass
 // and per frame, proxies, fps and the shadow accumulation's effective pixel-proxy pairs per
 // second, for the default scene at 512×512 with receivers at 1/1, 1/2, 1/4, 1/8, the two
 // baselines of the speed–accuracy chart on the default scene (vertex-based accumulation; scalar
@@ -32,6 +33,7 @@ struct BenchOptions {
   int size = 512;
   std::string device;
   std::string indirect_operator = "averaged";  // scene names (scene::names::kIndirectOperator)
+  std::string indirect_method = "proxy";       // settings::kIndirectMethodNames
   std::vector<std::string> only;               // empty: every row; else "default", "crowd", "baselines"
   bool runs(const std::string& part) const { return only.empty() || std::find(only.begin(), only.end(), part) != only.end(); }
 };
@@ -40,6 +42,12 @@ settings::IndirectOperator indirect_operator(const std::string& name) {
   for (const auto& [text, value] : scene::names::kIndirectOperator)
     if (text == name) return value;
   return settings::IndirectOperator::averaged;  // unreachable: the option is checked
+}
+
+settings::IndirectMethod indirect_method(const std::string& name) {
+  for (const auto& [text, value] : settings::kIndirectMethodNames)
+    if (text == name) return value;
+  return settings::IndirectMethod::proxy;  // unreachable: the option is checked
 }
 
 struct ConfigResult {
@@ -74,6 +82,7 @@ Result<ConfigResult> run_config(gpu::Context& context, const std::string& name,
   render.receiver_scale = scale;
   render.splat = splat;
   render.indirect_operator = indirect_operator(options.indirect_operator);
+  render.indirect_method = indirect_method(options.indirect_method);
   auto renderer = gpu::SceneRenderer::create(context, world, render, std::uint32_t(options.size),
                                              std::uint32_t(options.size));
   if (!renderer) return renderer.error();
@@ -164,6 +173,7 @@ int run_bench_frame(const BenchOptions& options) {
     out["size"] = options.size;
     out["frames"] = options.frames;
     out["indirect_operator"] = options.indirect_operator;
+    out["indirect_method"] = options.indirect_method;
     out["peak_resident_mib"] = peak_mib;
     if (has_default) out["speedup_quarter_over_full"] = k1 / k4;
     for (const auto& result : results) {
@@ -188,8 +198,9 @@ int run_bench_frame(const BenchOptions& options) {
     std::printf("%s\n", out.dump(2).c_str());
     return kExitOk;
   }
-  std::printf("device: %s (%s), %dx%d, %d frames per setting, %s indirect operator\n", report.name.c_str(),
-              report.driver.c_str(), options.size, options.size, options.frames, options.indirect_operator.c_str());
+  std::printf("device: %s (%s), %dx%d, %d frames per setting, indirect %s (%s operator)\n", report.name.c_str(),
+              report.driver.c_str(), options.size, options.size, options.frames, options.indirect_method.c_str(),
+              options.indirect_operator.c_str());
   std::printf("%-8s %-6s %-7s %3s %9s %5s %7s %9s %6s |", "scene", "method", "splat", "k", "receivers", "chars",
               "proxies", "frame ms", "fps");
   for (std::size_t p = 0; p < std::size_t(gpu::FramePass::count); ++p)
@@ -233,6 +244,8 @@ void add_bench_frame_command(CLI::App& bench, CommandRunner& runner) {
   command->add_option("--size", options->size, "Square output size in pixels")->check(CLI::Range(settings::kMinImageSize, settings::kMaxImageSize));
   command->add_option("--indirect-operator", options->indirect_operator, "Indirect operator of every setting")
       ->check(CLI::IsMember({"point", "averaged", "exact"}));
+  command->add_option("--indirect-method", options->indirect_method, "Bounce light of every setting (render.indirect_method)")
+      ->check(CLI::IsMember({"proxy", "vsgl", "none"}));
   command->add_option("--only", options->only, "Rows to run (default: all): default, baselines, crowd")
       ->delimiter(',')
       ->check(CLI::IsMember({"default", "baselines", "crowd"}));

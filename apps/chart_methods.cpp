@@ -19,10 +19,8 @@ std::vector<MethodSetting> method_grid(bool quick) {
     for (int order = settings::kMinShOrder; order <= settings::kMaxShOrder; ++order) orders.push_back(order);
     scales.assign(settings::kReceiverScales.begin(), settings::kReceiverScales.end());
   }
-  const std::vector<settings::IndirectOperator> operators =
-      quick ? std::vector<settings::IndirectOperator>{defaults.indirect_operator}
-            : std::vector<settings::IndirectOperator>{settings::IndirectOperator::point, settings::IndirectOperator::averaged,
-                                                   settings::IndirectOperator::exact};
+  const std::vector<settings::IndirectOperator> operators = {
+      settings::IndirectOperator::point, settings::IndirectOperator::averaged, settings::IndirectOperator::exact};
   for (int order : orders)
     for (int scale : scales)
       for (settings::Upsampling upsampling : {settings::Upsampling::bilateral, settings::Upsampling::bilinear}) {
@@ -31,9 +29,14 @@ std::vector<MethodSetting> method_grid(bool quick) {
         for (settings::IndirectOperator indirect : operators)
           grid.push_back({settings::ShadingMethod::image_space, order, scale, upsampling, indirect});
       }
+  for (int lights : settings::kVsglLightsPerCharacter)
+    grid.push_back({settings::ShadingMethod::image_space, defaults.sh_order, defaults.receiver_scale, defaults.upsampling,
+                    defaults.indirect_operator, settings::IndirectMethod::vsgl, lights});
+  grid.push_back({settings::ShadingMethod::image_space, defaults.sh_order, defaults.receiver_scale, defaults.upsampling,
+                  defaults.indirect_operator, settings::IndirectMethod::none});
   // What the lit ground adds: the default setting with render.ground_bounce off.
   grid.push_back({settings::ShadingMethod::image_space, defaults.sh_order, defaults.receiver_scale, defaults.upsampling,
-                  defaults.indirect_operator, false});
+                  defaults.indirect_operator, settings::IndirectMethod::proxy, 1, false});
   for (int order : orders)
     grid.push_back({settings::ShadingMethod::vertex, order, 1, settings::Upsampling::bilateral, defaults.indirect_operator});
   for (int scale : scales)
@@ -53,10 +56,14 @@ study::ChartRow describe_setting(const MethodSetting& setting, const std::string
       row.sh_order = setting.sh_order;
       row.receiver_scale = setting.receiver_scale;
       if (setting.receiver_scale > 1) row.upsampling = std::string(settings::name_of(setting.upsampling));
-      row.indirect = std::string(settings::name_of(setting.indirect));
+      // The bounce column: the proxy operator, "vsgl<K>" (K lights per character) or "none".
+      row.indirect = setting.indirect_method == settings::IndirectMethod::proxy
+                         ? std::string(settings::name_of(setting.indirect))
+                         : std::string(settings::name_of(setting.indirect_method));
+      if (setting.indirect_method == settings::IndirectMethod::vsgl) row.indirect += std::to_string(setting.vsgl_lights);
       row.is_default = setting.sh_order == defaults.sh_order && setting.receiver_scale == defaults.receiver_scale &&
                        setting.upsampling == defaults.upsampling && setting.indirect == defaults.indirect_operator &&
-                       setting.ground_bounce == defaults.ground_bounce;
+                       setting.indirect_method == defaults.indirect_method && setting.ground_bounce == defaults.ground_bounce;
       break;
     case settings::ShadingMethod::vertex:
       row.method = "vertex";
@@ -87,6 +94,8 @@ Status run_raster_methods(gpu::Context& context, const study::ChartScene& chart,
     render.upsampling = setting.upsampling;
     render.indirect_operator = setting.indirect;
     render.ground_bounce = setting.ground_bounce;
+    render.indirect_method = setting.indirect_method;
+    render.vsgl_lights = setting.vsgl_lights;
     grid_settings.push_back(render);
   }
   auto renderer = gpu::SceneRenderer::create(context, std::shared_ptr<const world::World>(std::move(*world)),

@@ -1,7 +1,9 @@
 #version 460
 // Indirect accumulation (frame step 6), order 3 (paper §5), compiled once per operator with
 // -DINDIRECT_OPERATOR=0 (point, eq. 13), 1 (averaged, eq. 15, D by its polynomial fit) or 2
-// (exact, eq. 17) as "indirect.comp:<operator>" (render::IndirectOperator):
+// (exact, eq. 17) as "indirect.comp:<operator>" (render::IndirectOperator), and with 3 as
+// "indirect.comp:vsgl" (render.indirect_method vsgl: E_ind = Σ_k the closed form of
+// sh::vsgl_irradiance over the lights vsgl_lights.comp fitted, no visibility, no ξ_p; a = 0):
 //   point, averaged: E_ind = ξ_p Σ_i (albedo_i/π) max(κ_i, 0) max(V_i · H(N), 0), κ_i = rot(K, d_i) · L̃
 //                    with K_l = D_l(s_i) or (−1)^l sqrt((2l+1)/4π) (then rot(K, d) = y(−d))
 //   exact:           E_ind = ξ_p Σ_i (albedo_i/π) max(H(N) · R⁻¹ M(s_i) R L̃, 0), M from binding 7
@@ -24,11 +26,56 @@ layout(std430, set = 0, binding = kIndirectBindIndirect) writeonly buffer Indire
 layout(std430, set = 0, binding = kIndirectBindShaded) writeonly buffer Shaded { vec4 shaded[]; };
 
 #ifndef INDIRECT_OPERATOR
-#error "compile with -DINDIRECT_OPERATOR=0 (point), 1 (averaged) or 2 (exact)"
+#error "compile with -DINDIRECT_OPERATOR=0 (point), 1 (averaged), 2 (exact) or 3 (vsgl)"
 #endif
 #if INDIRECT_OPERATOR == 2
 #include "indirect_exact.glsl"
 #endif
+#if INDIRECT_OPERATOR == 3
+layout(std430, set = 0, binding = kIndirectBindVsglLights) readonly buffer VsglLights {
+  uvec4 vsgl_light_count;
+  VsglLight vsgl_lights[];
+};
+
+// sh::vsgl_irradiance: eq. 6–7 (λ_σ = ‖μ − p‖²/σ², σ² floored), then the diffuse result with
+// A(λ_d) exact; λ_in − λ_v − λ_σ in the form that does not cancel the large λ_σ.
+vec3 vsgl_irradiance(VsglLight light, vec3 p, vec3 normal) {
+  vec3 offset = light.mean_variance.xyz - p;
+  float distance2 = dot(offset, offset);
+  if (!(distance2 > 0.0)) return vec3(0.0);
+  vec3 toward = offset * inversesqrt(distance2);
+  float variance = max(light.mean_variance.w, kVsglMinRelativeVariance * distance2);
+  float spread = distance2 / variance;
+  vec3 axis = light.axis_sharpness.xyz;
+  float sharpness_v = light.axis_sharpness.w;
+  vec3 sum = spread * toward - sharpness_v * axis;
+  float sharpness = length(sum);
+  float exponent = -2.0 * spread * sharpness_v * (1.0 + dot(toward, axis)) / (sharpness + spread + sharpness_v);
+  vec3 axis_in = sharpness > 0.0 ? sum / sharpness : toward;
+  vec3 amplitude = light.amplitude.rgb * (exp(exponent) / (2.0 * kPi * variance));
+  const float lambda_d = kVsglDiffuseSharpness;
+  float cosine_amplitude = kPi * lambda_d / (2.0 * kPi * (1.0 - exp(-2.0 * lambda_d)));  // π / A(λ_d)
+  float blurred = sharpness * lambda_d / (sharpness + lambda_d);
+  return amplitude * (2.0 * kPi * cosine_amplitude * exp(blurred * (dot(axis_in, normal) - 1.0)) / (sharpness + lambda_d));
+}
+
+void main() {
+  uvec2 receiver = gl_GlobalInvocationID.xy;
+  uvec2 receiver_size = uvec2(frame.receiver_width, frame.receiver_height);
+  if (!all(lessThan(receiver, receiver_size))) return;
+  uint index = receiver.y * receiver_size.x + receiver.x;
+  Receiver r = receivers[index];
+  if (!(r.position_depth.w > 0.0) || frame.indirect_enabled == 0u) {
+    indirect[index] = vec4(0.0);
+    shaded[index] = r.position_depth.w > 0.0 ? vec4(direct[index].rgb, r.position_depth.w) : vec4(0.0);
+    return;
+  }
+  vec3 irradiance = vec3(0.0);
+  for (uint k = 0u; k < vsgl_light_count.x; ++k) irradiance += vsgl_irradiance(vsgl_lights[k], r.position_depth.xyz, r.normal.xyz);
+  indirect[index] = vec4(irradiance, 0.0);
+  shaded[index] = vec4(direct[index].rgb + irradiance, r.position_depth.w);
+}
+#else
 
 float influence_fade(float s, float eta, int rows) {
   float width = 4.0 / float(rows - 1);
@@ -121,3 +168,4 @@ void main() {
   indirect[index] = vec4(irradiance, solid_angle_sum);
   shaded[index] = vec4(direct[index].rgb + irradiance, r.position_depth.w);
 }
+#endif

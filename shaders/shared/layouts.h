@@ -166,6 +166,47 @@ struct Receiver {
   vec4 normal;          // xyz unit normal N, w unused
 };
 
+// ---- VSGL bounce light (render.indirect_method vsgl; sh/vsgl.h is the CPU twin) ----
+// vsgl_lights.comp stage 0: each character draw's triangles (or one of render.vsgl_lights index
+// ranges of them, each its own light) are diffuse VPLs (centroid, summed vertex normals, area,
+// flux = base color × max(E(N), 0) × area, E from irradiance_sh), summed per workgroup
+// (kVsglGroupSize × kVsglTrianglesPerInvocation triangles) into one partial (positions relative
+// to the group's first centroid); stage 1: one invocation per light sums its partials in order (shifted to the
+// origin of its first) and fits the VSGL. indirect.comp:vsgl evaluates the lights per receiver.
+PROXYGI_CONST(uint, kVsglMaxLights, 256u);      // characters × render.vsgl_lights per frame
+PROXYGI_CONST(uint, kVsglGroupSize, 64u);       // invocations per workgroup (and lights per fit group)
+PROXYGI_CONST(uint, kVsglTrianglesPerInvocation, 16u);  // a partial sums 64 × 16 triangles
+PROXYGI_CONST(uint, kVsglMaxPartials, 16384u);  // character triangles beyond 16384 × 1024 are skipped
+PROXYGI_CONST(float, kVsglDiffuseSharpness, 2.0);        // λ_d (sh::kDiffuseLobeSharpness)
+PROXYGI_CONST(float, kVsglMinRelativeVariance, 1e-6);    // sh::kVsglMinRelativeVariance
+PROXYGI_CONST(uint, kVsglStageSums, 0u);
+PROXYGI_CONST(uint, kVsglStageFit, 1u);
+
+// Sums of one workgroup of VPLs (sh::VsglSums relative to `origin`).
+struct VsglPartial {
+  vec4 origin_light;     // xyz origin (m), w the light (character) index as a float
+  vec4 weight_axis;      // x Σ w, yzw Σ w ξ̄ (w = luminance of the flux, ξ̄ = λ_d/(λ_d+1) n)
+  vec4 position_square;  // xyz Σ w (x − origin), w Σ w ‖x − origin‖²
+  vec4 flux;             // rgb Σ flux, a unused
+};
+// One fitted VSGL (sh::Vsgl). Unused lights have zero amplitude.
+struct VsglLight {
+  vec4 axis_sharpness;   // xyz ξ_v, w λ_v
+  vec4 amplitude;        // rgb c_v (flux / sr), a unused
+  vec4 mean_variance;    // xyz μ_v (m), w σ_v² (m²)
+};
+// Push constants of vsgl_lights.comp.
+struct VsglLightsPush {
+  vec4 base_color;       // stage 0: the draw's linear albedo factor
+  uint stage;            // kVsglStageSums or kVsglStageFit
+  uint triangle_count;   // stage 0: triangles of the draw
+  uint partial_offset;   // stage 0: partial of the draw's first workgroup
+  uint light;            // stage 0: the draw's light index
+  uint partial_count;    // stage 1: partials written
+  uint light_count;      // stage 1: lights to fit (≤ kVsglMaxLights)
+  uint first_triangle;   // stage 0: the draw's first triangle of this dispatch
+  uint padding1;
+};
 
 // ---- descriptor bindings (set 0) of each shader: the GLSL declarations and the C++ passes'
 // layouts and descriptor pushes both use these names, so a binding is numbered once ----
@@ -199,6 +240,14 @@ PROXYGI_CONST(uint, kIndirectBindDirect, 4u);
 PROXYGI_CONST(uint, kIndirectBindIndirect, 5u);
 PROXYGI_CONST(uint, kIndirectBindShaded, 6u);
 PROXYGI_CONST(uint, kIndirectBindExactTable, 7u);
+PROXYGI_CONST(uint, kIndirectBindVsglLights, 8u);  // read by the vsgl variant only
+// vsgl_lights.comp
+PROXYGI_CONST(uint, kVsglBindFrame, 0u);
+PROXYGI_CONST(uint, kVsglBindPositions, 1u);
+PROXYGI_CONST(uint, kVsglBindNormals, 2u);
+PROXYGI_CONST(uint, kVsglBindIndices, 3u);
+PROXYGI_CONST(uint, kVsglBindPartials, 4u);
+PROXYGI_CONST(uint, kVsglBindLights, 5u);
 // upsample_composite.comp
 PROXYGI_CONST(uint, kCompositeBindFrame, 0u);
 PROXYGI_CONST(uint, kCompositeBindPositionDepth, 1u);
@@ -266,6 +315,7 @@ static_assert(sizeof(Receiver) == 32);
 static_assert(sizeof(CompositePush) == 16);
 static_assert(sizeof(SkinPush) == 32);
 static_assert(sizeof(VertexReceiversPush) == 16);
+static_assert(sizeof(VsglPartial) == 64 && sizeof(VsglLight) == 48 && sizeof(VsglLightsPush) == 48);
 }  // namespace proxygi::gpu_layout
 #endif
 

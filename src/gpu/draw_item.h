@@ -24,6 +24,9 @@ struct DrawItem {
   glm::vec4 base_color{1.0f};   // linear albedo factor
   const Buffer* uvs = nullptr;  // vec2 TEXCOORD_0 per vertex; null: uv (0, 0)
   BaseColorTexture texture;     // null view: white
+  // The VSGL light (render.indirect_method vsgl) this draw sends bounce light through: its
+  // character's index (< gpu_layout::kVsglMaxLights); −1: not a sender (static meshes).
+  int vsgl_light = -1;
   std::uint32_t vertex_count() const { return positions ? std::uint32_t(positions->size() / sizeof(glm::vec4)) : 0; }
   bool textured() const { return texture.view != VK_NULL_HANDLE && texture.sampler != VK_NULL_HANDLE; }
 };
@@ -43,7 +46,7 @@ struct StaticMesh {
   BaseColorTexture texture;
   DrawItem draw() const {
     return {&positions, &normals, &indices, index_count, base_color, uvs.handle() != VK_NULL_HANDLE ? &uvs : nullptr,
-            texture};
+            texture, -1};
   }
 };
 // uvs: empty or one per position. The texture's image and sampler must outlive the mesh's draws.

@@ -15,6 +15,7 @@
 #include "gpu/shadow_splat_pass.h"
 #include "gpu/upsample_composite_pass.h"
 #include "gpu/vertex_receivers_pass.h"
+#include "gpu/vsgl_lights_pass.h"
 
 namespace proxygi::gpu {
 
@@ -27,6 +28,7 @@ struct FramePassSet {
   std::optional<AmbientOcclusionPass> ambient_occlusion; // AO method
   std::optional<ExponentiatePass> exponentiate;
   std::optional<IndirectPass> indirect;
+  std::optional<VsglLightsPass> vsgl_lights;             // indirect_method vsgl
   std::optional<UpsampleCompositePass> upsample_composite;
 
   static Result<FramePassSet> create(Context& context, const FrameConfig& config);

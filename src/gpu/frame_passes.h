@@ -8,6 +8,7 @@
 //   shadow_splat_pass.h        shadow_splat.vert/.frag   the same by rasterizing spheres of influence
 //   exponentiate_pass.h        exponentiate.comp         log-occlusion, OL table, LH cubes → direct E, (O_p)_0
 //   indirect_pass.h            indirect.comp             proxies, visibility, direct → indirect E, ω_p, shaded
+//   vsgl_lights_pass.h         vsgl_lights.comp          (indirect_method vsgl, in step 6) draws → VSGL lights
 //   upsample_composite_pass.h  upsample_composite.comp   G-buffer, shaded, environment → irradiance, HDR, sRGB
 //   vertex_receivers_pass.h    vertex_receivers.comp     (vertex baseline) mesh vertices → receivers
 //   ambient_occlusion_pass.h   ambient_occlusion.comp    (AO baseline) receivers, proxies → direct, shaded

@@ -46,6 +46,17 @@ Result<std::vector<std::uint32_t>> SoftGiFrame::read_tile_counts() const {
   return counts;
 }
 
+Result<std::vector<gpu_layout::VsglLight>> SoftGiFrame::read_vsgl_lights() const {
+  auto bytes = readback(context_, targets_.vsgl_lights);
+  if (!bytes) return bytes.error();
+  glm::uvec4 header;
+  std::memcpy(&header, bytes->data(), sizeof(header));
+  const std::size_t count = std::min<std::size_t>(header.x, gpu_layout::kVsglMaxLights);
+  std::vector<gpu_layout::VsglLight> lights(count);
+  std::memcpy(lights.data(), bytes->data() + sizeof(header), count * sizeof(gpu_layout::VsglLight));
+  return lights;
+}
+
 Result<image::ImageF> SoftGiFrame::read_receiver_field(bool normals) const {
   auto bytes = readback(context_, targets_.receivers);
   if (!bytes) return bytes.error();

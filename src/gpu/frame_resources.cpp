@@ -44,7 +44,9 @@ Result<StaticMesh> upload_static_mesh(Context& context, std::span<const glm::vec
   const auto normals4 = to_vec4(normals, 0.0f);
   auto p = create_buffer_with_data(context, bytes_of(std::span<const glm::vec4>(positions4)), kStorage);
   auto n = create_buffer_with_data(context, bytes_of(std::span<const glm::vec4>(normals4)), kStorage);
-  auto i = create_buffer_with_data(context, bytes_of(indices), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+  // Storage too: the VSGL lights pass reads a sender's triangles (a test's static mesh can be one).
+  auto i = create_buffer_with_data(context, bytes_of(indices),
+                                   VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   if (!p) return p.error();
   if (!n) return n.error();
   if (!i) return i.error();
@@ -89,6 +91,8 @@ Status SoftGiFrame::build_targets() {
       {&targets.hdr, pixels * sizeof(glm::vec4)},
       {&targets.ldr, pixels * sizeof(std::uint32_t)},
       {&targets.tile_counts, VkDeviceSize(tiles_x()) * tiles_y() * sizeof(std::uint32_t)},
+      {&targets.vsgl_partials, VsglLightsPass::partials_bytes()},
+      {&targets.vsgl_lights, VsglLightsPass::lights_bytes()},
   };
   for (const auto& target : buffers) {
     auto made = Buffer::create(context_, target.bytes, kStorage, MemoryKind::device_local);

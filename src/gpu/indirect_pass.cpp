@@ -6,7 +6,7 @@ namespace proxygi::gpu {
 
 using namespace gpu_layout;
 
-Result<IndirectPass> IndirectPass::create(const Context& context, settings::IndirectOperator indirect_operator) {
+Result<IndirectPass> IndirectPass::create(const Context& context, const settings::RenderSettings& render) {
   const ComputeBinding bindings[] = {{kIndirectBindFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
                                      {kIndirectBindReceivers, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                                      {kIndirectBindProxies, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
@@ -14,9 +14,12 @@ Result<IndirectPass> IndirectPass::create(const Context& context, settings::Indi
                                      {kIndirectBindDirect, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                                      {kIndirectBindIndirect, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                                      {kIndirectBindShaded, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                                     {kIndirectBindExactTable, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
-  auto pipeline =
-      make_compute_pipeline(context, "indirect.comp:" + std::string(settings::name_of(indirect_operator)), bindings);
+                                     {kIndirectBindExactTable, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                     {kIndirectBindVsglLights, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+  const std::string variant = render.indirect_method == settings::IndirectMethod::vsgl
+                                  ? std::string("vsgl")
+                                  : std::string(settings::name_of(render.indirect_operator));
+  auto pipeline = make_compute_pipeline(context, "indirect.comp:" + variant, bindings);
   if (!pipeline) return pipeline.error();
   IndirectPass pass;
   pass.pipeline_ = std::move(*pipeline);
@@ -25,7 +28,8 @@ Result<IndirectPass> IndirectPass::create(const Context& context, settings::Indi
 
 std::vector<ResourceAccess> IndirectPass::accesses(const Inputs& in, const Outputs& out) const {
   return {reads(in.constants), reads(in.receivers),   reads(in.proxies),    reads(in.visibility_table),
-          reads(in.direct),    reads(in.exact_table), writes(out.indirect), writes(out.shaded)};
+          reads(in.direct),    reads(in.exact_table), reads(in.vsgl_lights), writes(out.indirect),
+          writes(out.shaded)};
 }
 
 void IndirectPass::record(const Context& context, VkCommandBuffer commands, const Inputs& in,
@@ -40,6 +44,7 @@ void IndirectPass::record(const Context& context, VkCommandBuffer commands, cons
       .storage_buffer(kIndirectBindIndirect, *out.indirect)
       .storage_buffer(kIndirectBindShaded, *out.shaded)
       .storage_buffer(kIndirectBindExactTable, *in.exact_table)
+      .storage_buffer(kIndirectBindVsglLights, *in.vsgl_lights)
       .push(context, commands, pipeline_);
   dispatch_grid(commands, in.receiver_width, in.receiver_height);
 }

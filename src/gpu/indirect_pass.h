@@ -2,6 +2,8 @@
 // Indirect (frame step 6, indirect.comp, one variant per operator): bounce light from the proxies,
 // Σ_i κ_i (V_i · H(N)) normalized by ξ_p (eq. 12), and the packed shaded buffer (E_direct +
 // E_indirect, eye depth) the upsampler reads. CPU twin: render::accumulate_indirect.
+// indirect_method vsgl: the variant "indirect.comp:vsgl" sums the closed form of the VSGL lights
+// (vsgl_lights_pass.h) instead; CPU twin sh::vsgl_irradiance.
 #include "base/result.h"
 #include "gpu/frame_passes.h"
 #include "gpu/pass_barriers.h"
@@ -18,6 +20,7 @@ class IndirectPass {
     const Buffer* visibility_table = nullptr;  // faded order-3 ZH visibility
     const Buffer* direct = nullptr;            // exponentiate's output
     const Buffer* exact_table = nullptr;       // M(s) rows (read by the exact variant only)
+    const Buffer* vsgl_lights = nullptr;       // VsglLightsPass's lights (read by the vsgl variant only)
     std::uint32_t receiver_width = 0, receiver_height = 0;
   };
   struct Outputs {
@@ -26,7 +29,8 @@ class IndirectPass {
   };
   static constexpr FramePass kPass = FramePass::indirect;
 
-  static Result<IndirectPass> create(const Context& context, settings::IndirectOperator indirect_operator);
+  // The variant of render.indirect_method (vsgl) or else of render.indirect_operator.
+  static Result<IndirectPass> create(const Context& context, const settings::RenderSettings& render);
   std::vector<ResourceAccess> accesses(const Inputs& in, const Outputs& out) const;
   void record(const Context& context, VkCommandBuffer commands, const Inputs& in, const Outputs& out) const;
 

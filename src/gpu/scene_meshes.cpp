@@ -53,8 +53,9 @@ Status SceneRenderer::upload_instances() {
         if (!uploaded) return uploaded.error();
         Shared& buffers = shared[{source.model, node, draw.index_counts.size()}];
         if (!buffers.indices) {
+          // Storage too: the VSGL lights pass reads the triangles (indirect_method vsgl).
           auto indices = create_buffer_with_data(context_, as_bytes(std::span<const std::uint32_t>(primitive.indices)),
-                                                 VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+                                                 VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
           if (!indices) return indices.error();
           buffers.indices = std::make_shared<const Buffer>(std::move(*indices));
           if (!primitive.uvs.empty()) {

@@ -10,6 +10,7 @@
 #include "gpu/scene_renderer_parts.h"
 #include "gpu/transfer.h"
 #include "settings/fields.h"
+#include "shaders/shared/layouts.h"
 
 namespace proxygi::gpu {
 
@@ -148,6 +149,12 @@ Result<std::vector<DrawItem>> SceneRenderer::prepare(const FrameRequest& request
   if (state->instances.size() != instances_.size())
     return make_error("frame: the world state holds " + std::to_string(state->instances.size()) +
                       " characters, the renderer " + std::to_string(instances_.size()));
+  const settings::RenderSettings& render = frame_->settings();
+  if (render.indirect_method == settings::IndirectMethod::vsgl &&
+      instances_.size() * std::size_t(render.vsgl_lights) > gpu_layout::kVsglMaxLights)
+    return make_error("render.indirect_method vsgl: " + std::to_string(instances_.size()) + " characters × " +
+                      std::to_string(render.vsgl_lights) + " lights, at most " +
+                      std::to_string(gpu_layout::kVsglMaxLights) + " lights");
   std::vector<DrawItem> draws;
   for (std::size_t index = 0; index < instances_.size(); ++index) {
     const anim::PoseBuffers& pose = state->instances[index].pose;
@@ -166,7 +173,7 @@ Result<std::vector<DrawItem>> SceneRenderer::prepare(const FrameRequest& request
       for (std::size_t i = 0; i < mesh.primitives.size(); ++i)
         draws.push_back({&mesh.primitives[i].world_positions, &mesh.primitives[i].world_normals, mesh.indices[i].get(),
                          mesh.index_counts[i], mesh.materials[i].base_color,
-                         mesh.uvs[i].get(), mesh.materials[i].texture});
+                         mesh.uvs[i].get(), mesh.materials[i].texture, int(index)});
     }
   }
   for (const auto& mesh : static_meshes_) draws.push_back(mesh.draw());

@@ -126,7 +126,7 @@ Status SoftGiFrame::write_slot(std::uint32_t slot, const FrameView& view, std::s
   constants.exposure = settings::exposure_multiplier(render);
   constants.tonemap = tonemap_code(render.tonemap);
   constants.bilateral_depth_epsilon = render.bilateral_depth_epsilon;
-  constants.indirect_enabled = render.indirect ? 1u : 0u;
+  constants.indirect_enabled = render.indirect_method != settings::IndirectMethod::none ? 1u : 0u;
   for (int channel = 0; channel < 3; ++channel)
     for (int i = 0; i < 9; ++i)
       constants.irradiance_sh[channel * 9 + i] =
@@ -192,9 +192,13 @@ void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot_index
           ExponentiatePass::Outputs{&t.direct});
       break;
     case FramePass::indirect:
+      if (passes_.vsgl_lights)
+        run(*passes_.vsgl_lights,
+            VsglLightsPass::Inputs{&slot.constants, draws, std::uint32_t(config_.render.vsgl_lights)},
+            VsglLightsPass::Outputs{&t.vsgl_partials, &t.vsgl_lights});
       run(*passes_.indirect,
           IndirectPass::Inputs{&slot.constants, &t.receivers, &slot.proxies, &tables_.visibility_table, &t.direct,
-                               &tables_.exact_indirect, rw, rh},
+                               &tables_.exact_indirect, &t.vsgl_lights, rw, rh},
           IndirectPass::Outputs{&t.indirect, &t.shaded});
       break;
     case FramePass::upsample_composite:

@@ -27,6 +27,10 @@
 #include "render/frame_tables.h"
 #include "render/shading.h"
 
+namespace proxygi::gpu_layout {
+struct VsglLight;
+}
+
 namespace proxygi::gpu {
 
 class Context;
@@ -101,6 +105,8 @@ class SoftGiFrame {
   Result<std::vector<std::uint32_t>> read_tile_counts() const;
   std::uint32_t tiles_x() const;
   std::uint32_t tiles_y() const;
+  // The VSGL lights of the last frame (indirect_method vsgl; gpu_layout::VsglLight each), count first.
+  Result<std::vector<gpu_layout::VsglLight>> read_vsgl_lights() const;
   // G-buffer (display res): xyz world position, a eye depth (0 = background); xyz normal.
   Result<image::ImageF> read_gbuffer_positions() const;
   Result<image::ImageF> read_gbuffer_normals() const;
@@ -111,6 +117,7 @@ class SoftGiFrame {
     Image position_depth, normal, albedo, depth;
     Buffer receivers, log_occlusion, direct, indirect, shaded, irradiance, hdr, ldr;
     Buffer tile_counts;  // uint per 8×8-receiver tile (tile_count()), the shadow pass's list lengths
+    Buffer vsgl_partials, vsgl_lights;  // VsglLightsPass outputs (small: allocated for every method)
   };
   struct Tables {
     Buffer log_table, visibility_table, optimal_linear, lighting_cube, exact_indirect;

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/atomic_file.h"
+#include "base/log.h"
 #include "scene/json_reader.h"
 #include "settings/fields.h"
 #include "scene/scene_names.h"
@@ -231,6 +232,15 @@ Camera read_camera(const json& value, const std::string& path, float default_far
 settings::RenderSettings read_render(const json& value, const std::string& path) {
   ObjectReader r(value, path);
   settings::RenderSettings s;
+  // The boolean of earlier files still loads (true = proxy, false = none), alone only.
+  if (const json* old = r.get("indirect")) {
+    const bool on = detail::read_bool(*old, r.field("indirect"));
+    if (r.has("indirect_method"))
+      fail(r.field("indirect"), "give only \"indirect_method\" (\"indirect\" is its older boolean form)");
+    s.indirect_method = on ? settings::IndirectMethod::proxy : settings::IndirectMethod::none;
+    log_warning(r.field("indirect") + ": the boolean form of \"indirect_method\", read as \"" +
+                (on ? "proxy" : "none") + "\"; write \"indirect_method\" instead");
+  }
   for (const settings::Field& field : settings::fields()) {
     const json* v = r.get(field.key);
     if (v == nullptr) continue;

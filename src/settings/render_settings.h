@@ -26,6 +26,13 @@ namespace proxygi::settings {
 enum class ShadingMethod { image_space, vertex, ambient_occlusion };
 // How a proxy's radiance is formed from the order-3 irradiance (paper §5; render/shading.h).
 enum class IndirectOperator { point, averaged, exact };
+// Where bounce light from the characters comes from (render.indirect_method):
+//   proxy  the sphere proxies through indirect_operator (paper §5), masked by their coverage
+//   vsgl   one virtual spherical Gaussian light per character fitted on the GPU to its skinned
+//          triangles lit by the unshadowed SH irradiance, evaluated in closed form without
+//          visibility (papers/vsgl-tokuyoshi.md; sh/vsgl.h)
+//   none   no bounce light
+enum class IndirectMethod { proxy, vsgl, none };
 // SH exponential: HYB (OL after halving until |f̂| ≤ τ, then squarings) or OL alone.
 enum class Exponential { hyb, ol };
 enum class Upsampling { bilateral, bilinear };
@@ -38,6 +45,8 @@ enum class Tonemap { aces, reinhard, clamp };
 inline constexpr int kMinShOrder = 3;  // SH order n: n bands, n² coefficients
 inline constexpr int kMaxShOrder = 6;
 inline constexpr std::array<int, 4> kReceiverScales = {1, 2, 4, 8};  // k: receivers at 1/k resolution
+// VSGL lights per character (indirect_method vsgl): its triangles split into this many index ranges.
+inline constexpr std::array<int, 4> kVsglLightsPerCharacter = {1, 2, 4, 8};
 
 struct RenderSettings {
   ShadingMethod method = ShadingMethod::image_space;
@@ -52,7 +61,8 @@ struct RenderSettings {
   Upsampling upsampling = Upsampling::bilateral;
   float bilateral_depth_epsilon = 0.05f;  // ε of eq. 11, meters of eye depth, > 0
   SplatMethod splat = SplatMethod::compute;  // the gather measured faster on lavapipe (README)
-  bool indirect = true;
+  IndirectMethod indirect_method = IndirectMethod::proxy;
+  int vsgl_lights = 1;          // VSGL lights per character, one of kVsglLightsPerCharacter
   // Receivers above the ground plane see the lit ground (albedo × its unshadowed irradiance / π)
   // below their horizon instead of the environment's below-horizon radiance (sh/ground_bounce.h).
   bool ground_bounce = true;
@@ -72,6 +82,8 @@ inline constexpr Name<ShadingMethod> kShadingMethodNames[] = {
     {"image", ShadingMethod::image_space}, {"vertex", ShadingMethod::vertex}, {"ao", ShadingMethod::ambient_occlusion}};
 inline constexpr Name<IndirectOperator> kIndirectOperatorNames[] = {
     {"point", IndirectOperator::point}, {"averaged", IndirectOperator::averaged}, {"exact", IndirectOperator::exact}};
+inline constexpr Name<IndirectMethod> kIndirectMethodNames[] = {
+    {"proxy", IndirectMethod::proxy}, {"vsgl", IndirectMethod::vsgl}, {"none", IndirectMethod::none}};
 inline constexpr Name<Exponential> kExponentialNames[] = {{"hyb", Exponential::hyb}, {"ol", Exponential::ol}};
 inline constexpr Name<Upsampling> kUpsamplingNames[] = {{"bilateral", Upsampling::bilateral},
                                                         {"bilinear", Upsampling::bilinear}};
@@ -88,6 +100,7 @@ constexpr std::string_view name_of(const Name<Enum> (&table)[N], Enum value) {
 }
 std::string_view name_of(ShadingMethod value);
 std::string_view name_of(IndirectOperator value);
+std::string_view name_of(IndirectMethod value);
 std::string_view name_of(Exponential value);
 std::string_view name_of(Upsampling value);
 std::string_view name_of(SplatMethod value);

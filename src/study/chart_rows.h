@@ -20,7 +20,7 @@ struct ChartRow {
   int sh_order = 0;       // proxy methods: SH order; path tracing: 0
   int receiver_scale = 0; // proxy/ao: k; vertex: 0
   std::string upsampling; // "bilateral" / "bilinear"; empty where it does not apply
-  std::string indirect;   // "point" / "averaged" / "exact"; empty where it does not apply
+  std::string indirect;   // "point" / "averaged" / "exact" / "vsgl1".."vsgl8" / "none"; empty where it does not apply
   int samples = 0;        // path tracing: samples per pixel; else 0
   double milliseconds = 0.0;  // per frame
   double relative_mse = 0.0;

@@ -70,6 +70,18 @@ Result<std::vector<ChartScene>> chart_scenes(const ChartSceneOptions& options) {
   };
   std::vector<ChartScene> scenes;
   if (wanted("default")) scenes.push_back({"default", scene::default_scene(), {}});
+  // Only when named: the default scene with a second mannequin walking 1.5 m behind the first
+  // (bounce between characters beyond the proxies' sphere of influence: where VSGL should win).
+  if (!options.only.empty() && wanted("pair")) {
+    ChartScene pair{"pair", scene::default_scene(), {}};
+    scene::Character second = pair.scene.characters.front();
+    scene::WalkPath& path = *second.path;
+    path.start.z = path.end.z = -1.5f;
+    second.time_offset_s = 0.4f;
+    pair.scene.characters.push_back(second);
+    pair.scene.description = "Chart scene: two mannequins walking side by side 1.5 m apart.";
+    scenes.push_back(std::move(pair));
+  }
   const SharedCharacter shared[] = {{"CesiumMan", "CesiumMan.glb", scene::ClipRef(0)},
                                     {"Fox", "Fox.glb", scene::ClipRef(std::string("Walk"))},
                                     {"RiggedSimple", "RiggedSimple.glb", scene::ClipRef(0)}};

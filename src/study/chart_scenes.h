@@ -1,6 +1,7 @@
 #pragma once
 // The scenes of the speed–accuracy chart: the built-in default scene and one scene per shared
-// sample character (CesiumMan, Fox, RiggedSimple from ../shared/assets/gltf).
+// sample character (CesiumMan, Fox, RiggedSimple from ../shared/assets/gltf); "pair" (two
+// mannequins 1.5 m apart) only when `only` names it.
 //
 // A character scene is the default scene's stage (ground, sky and sun) with that character
 // walking in place at the origin, uniformly scaled so its largest bind-pose extent is 1.7 m,

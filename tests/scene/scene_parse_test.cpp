@@ -47,7 +47,7 @@ constexpr const char* kFullScene = R"({
              "fov_degrees": 35, "near": 0.2, "far": 50},
   "render": {"method": "vertex", "sh_order": 5, "receiver_scale": 2, "shadow_eta": 12, "indirect_eta": 8,
              "indirect_operator": "exact", "exponential": "ol", "hyb_tau": 0.5,
-             "upsampling": "bilinear", "splat": "compute", "indirect": false,
+             "upsampling": "bilinear", "splat": "compute", "indirect_method": "none",
              "tonemap": "reinhard", "exposure_ev": -1.5},
   "output": {"width": 640, "height": 360, "fps": 30, "frames": {"first": 10, "last": 19},
              "formats": ["exr", "mp4"]}
@@ -140,7 +140,7 @@ TEST(SceneParse, EveryFieldOfTheFullScene) {
   EXPECT_EQ(r.upsampling, settings::Upsampling::bilinear);
   EXPECT_EQ(r.splat, settings::SplatMethod::compute);
   EXPECT_EQ(r.method, settings::ShadingMethod::vertex);
-  EXPECT_FALSE(r.indirect);
+  EXPECT_EQ(r.indirect_method, settings::IndirectMethod::none);
   EXPECT_EQ(r.tonemap, settings::Tonemap::reinhard);
   EXPECT_FLOAT_EQ(r.exposure_ev, -1.5f);
 
@@ -172,11 +172,21 @@ TEST(SceneParse, MinimalSceneTakesEveryDefault) {
   EXPECT_EQ(expected.render.exponential, settings::Exponential::hyb);
   EXPECT_FLOAT_EQ(expected.render.hyb_tau, 0.25f);
   EXPECT_EQ(expected.render.upsampling, settings::Upsampling::bilateral);
-  EXPECT_TRUE(expected.render.indirect);
+  EXPECT_EQ(expected.render.indirect_method, settings::IndirectMethod::proxy);
   EXPECT_EQ(expected.output.width, 512);
   EXPECT_EQ(expected.output.height, 512);
   EXPECT_DOUBLE_EQ(expected.output.fps, 24.0);
   EXPECT_TRUE(std::holds_alternative<FixedCamera>(expected.camera.kind));
+}
+
+// Files written before render.indirect_method keep their meaning.
+TEST(SceneParse, TheOlderIndirectBooleanReadsAsAnIndirectMethod) {
+  for (const auto& [text, expected] : {std::pair{R"({"render": {"indirect": false}})", settings::IndirectMethod::none},
+                                       std::pair{R"({"render": {"indirect": true}})", settings::IndirectMethod::proxy}}) {
+    auto scene = parse_scene(text, "old.json");
+    ASSERT_TRUE(scene.ok()) << scene.message();
+    EXPECT_EQ(scene->render.indirect_method, expected) << text;
+  }
 }
 
 TEST(SceneParse, OrbitCamera) {

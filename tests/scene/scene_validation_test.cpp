@@ -120,7 +120,10 @@ const Case kCases[] = {
     {R"({"render": {"method": "pixel"}})", "{}", "render.method: unknown value \"pixel\" (expected one of: image, vertex, ao)"},
     {R"({"render": {"splat": "mesh"}})", "{}", "render.splat: unknown value \"mesh\""},
     {R"({"render": {"tonemap": "filmic"}})", "{}", "render.tonemap: unknown value \"filmic\" (expected one of: aces, reinhard, clamp)"},
+    {R"({"render": {"sh_window": 1}})", "{}", "render.sh_window: expected true or false, got an integer"},
+    {R"({"render": {"indirect": false, "indirect_method": "vsgl"}})", "{}", "render.indirect: give only \"indirect_method\" (\"indirect\" is its older boolean form)"},
     {R"({"render": {"indirect": 1}})", "{}", "render.indirect: expected true or false, got an integer"},
+    {R"({"render": {"indirect_method": "sg"}})", "{}", "render.indirect_method: unknown value \"sg\" (expected one of: proxy, vsgl, none)"},
     {R"({"render": {"exposure": 1}})", "{}", "render.exposure: unknown key (did you mean \"exposure_ev\"?)"},
     // Output.
     {R"({"output": {"width": 15}})", "{}", "output.width: must be in 16..8192 (got 15)"},

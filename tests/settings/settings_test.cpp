@@ -22,8 +22,9 @@ TEST(SettingsFields, OneRowPerMemberEachWritingOnlyItsMember) {
                          : field.kind == FieldKind::choice ? double(field.choices.back().value == int(value)
                                                                        ? field.choices.front().value
                                                                        : field.choices.back().value)
-                         : field.kind == FieldKind::integer && !field.allowed.empty() ? double(field.allowed.front())
-                                                                                      : value + 1.0;
+                         : field.kind == FieldKind::integer && !field.allowed.empty()
+                             ? double(field.allowed.front() == int(value) ? field.allowed.back() : field.allowed.front())
+                             : value + 1.0;
     field.set(changed, other);
     EXPECT_EQ(field.get(changed), field.kind == FieldKind::real ? double(float(other)) : other) << field.key;  // reals are floats
     EXPECT_NE(changed, defaults) << field.key << " writes no member";

@@ -153,7 +153,7 @@ TEST(ViewerScript, ParsesEveryEventKindAndNamesTheBadOne) {
       {"t": 0.0, "key": "space", "shift": true},
       {"t": 0.5, "drag": {"button": "right", "dx": 4, "dy": -2}},
       {"t": 0.5, "scroll": 1},
-      {"t": 0.5, "set": {"sh_order": 5, "tonemap": "reinhard", "indirect": false}},
+      {"t": 0.5, "set": {"sh_order": 5, "tonemap": "reinhard", "indirect_method": "none"}},
       {"t": 0.6, "screenshot": "a.png", "ui": false},
       {"t": 0.6, "open": "m.glb"}, {"t": 0.6, "save": "s.json"},
       {"t": 0.7, "resize": [64, 32]}, {"t": 0.8, "minimize": true}, {"t": 0.9, "restore": true}]})");

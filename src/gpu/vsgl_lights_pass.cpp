@@ -1,0 +1,100 @@
+#include "gpu/vsgl_lights_pass.h"
+
+#include <algorithm>
+
+#include "sh/spherical_gaussian.h"
+#include "sh/vsgl.h"
+#include "shaders/shared/layouts.h"
+
+namespace proxygi::gpu {
+
+using namespace gpu_layout;
+
+static_assert(double(kVsglDiffuseSharpness) == sh::kDiffuseLobeSharpness, "λ_d is defined in sh/spherical_gaussian.h");
+static_assert(double(kVsglMinRelativeVariance) == double(float(sh::kVsglMinRelativeVariance)),
+              "the variance floor is defined in sh/vsgl.h");
+
+std::size_t VsglLightsPass::partials_bytes() { return sizeof(VsglPartial) * kVsglMaxPartials; }
+std::size_t VsglLightsPass::lights_bytes() { return sizeof(glm::uvec4) + sizeof(VsglLight) * kVsglMaxLights; }
+
+Result<VsglLightsPass> VsglLightsPass::create(const Context& context) {
+  const ComputeBinding bindings[] = {
+      {kVsglBindFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},    {kVsglBindPositions, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {kVsglBindNormals, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},  {kVsglBindIndices, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {kVsglBindPartials, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {kVsglBindLights, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+  auto pipeline = make_compute_pipeline(context, "vsgl_lights.comp", bindings, sizeof(VsglLightsPush));
+  if (!pipeline) return pipeline.error();
+  VsglLightsPass pass;
+  pass.pipeline_ = std::move(*pipeline);
+  return pass;
+}
+
+std::vector<ResourceAccess> VsglLightsPass::accesses(const Inputs& in, const Outputs& out) const {
+  std::vector<ResourceAccess> list = {reads(in.constants), writes(out.partials), writes(out.lights)};
+  for (const DrawItem& draw : in.draws) {
+    if (draw.vsgl_light < 0) continue;
+    list.push_back(reads(draw.positions));
+    list.push_back(reads(draw.normals));
+    list.push_back(reads(draw.indices));
+  }
+  return list;
+}
+
+void VsglLightsPass::record(const Context& context, VkCommandBuffer commands, const Inputs& in,
+                            const Outputs& out) const {
+  pipeline_.bind(commands);
+  std::uint32_t partial = 0, light_count = 0;
+  const std::uint32_t per_sender = std::max(in.lights_per_sender, 1u);
+  for (const DrawItem& draw : in.draws) {
+    if (draw.vsgl_light < 0) continue;
+    const std::uint32_t total = draw.index_count / 3;
+    for (std::uint32_t range = 0; range < per_sender; ++range) {
+      const std::uint32_t light = std::uint32_t(draw.vsgl_light) * per_sender + range;
+      const std::uint32_t first = std::uint32_t(std::uint64_t(range) * total / per_sender);
+      const std::uint32_t triangles = std::uint32_t(std::uint64_t(range + 1) * total / per_sender) - first;
+      const std::uint32_t groups = group_count(triangles, kVsglGroupSize * kVsglTrianglesPerInvocation);
+      if (light >= kVsglMaxLights || groups == 0 || partial + groups > kVsglMaxPartials)
+        continue;  // documented capacity
+      DescriptorPush()
+          .uniform_buffer(kVsglBindFrame, *in.constants)
+          .storage_buffer(kVsglBindPositions, *draw.positions)
+          .storage_buffer(kVsglBindNormals, *draw.normals)
+          .storage_buffer(kVsglBindIndices, *draw.indices)
+          .storage_buffer(kVsglBindPartials, *out.partials)
+          .storage_buffer(kVsglBindLights, *out.lights)
+          .push(context, commands, pipeline_);
+      VsglLightsPush push{};
+      push.base_color = draw.base_color;
+      push.stage = kVsglStageSums;
+      push.triangle_count = triangles;
+      push.partial_offset = partial;
+      push.light = light;
+      push.first_triangle = first;
+      pipeline_.push_constants(commands, &push, sizeof(push));
+      vkCmdDispatch(commands, groups, 1, 1);
+      partial += groups;
+      light_count = std::max(light_count, light + 1);
+    }
+  }
+  PassBarriers fit;  // the sums, then the fit reading them
+  const ResourceAccess summed[] = {writes(out.partials)};
+  const ResourceAccess fitted[] = {reads(out.partials), writes(out.lights)};
+  fit.before(commands, summed);
+  fit.before(commands, fitted);
+  DescriptorPush()
+      .uniform_buffer(kVsglBindFrame, *in.constants)
+      .storage_buffer(kVsglBindPositions, *out.partials)  // unread by the fit; any buffer
+      .storage_buffer(kVsglBindNormals, *out.partials)
+      .storage_buffer(kVsglBindIndices, *out.partials)
+      .storage_buffer(kVsglBindPartials, *out.partials)
+      .storage_buffer(kVsglBindLights, *out.lights)
+      .push(context, commands, pipeline_);
+  VsglLightsPush push{};
+  push.stage = kVsglStageFit;
+  push.partial_count = partial;
+  push.light_count = light_count;
+  pipeline_.push_constants(commands, &push, sizeof(push));
+  vkCmdDispatch(commands, group_count(kVsglMaxLights, kVsglGroupSize), 1, 1);
+}
+
+}  // namespace proxygi::gpu

@@ -1,0 +1,47 @@
+#pragma once
+// VSGL lights (render.indirect_method vsgl; vsgl_lights.comp): each character's skinned triangles
+// as diffuse VPLs lit by the unshadowed SH irradiance, reduced on the GPU into K virtual
+// spherical Gaussian lights per character (DrawItem::vsgl_light; K = render.vsgl_lights, the
+// triangles split into K index ranges — not bone groups), which indirect.comp:vsgl then
+// evaluates at every receiver. Recorded inside frame step 6 (its timing is the indirect pass's).
+//   inputs : frame constants (L̃ order 3), the draws' world positions, normals and indices
+//   outputs: partials (kVsglMaxPartials VsglPartial, scratch), lights (uvec4 count, then
+//            kVsglMaxLights VsglLight)
+// Sums are deterministic: a fixed tree per workgroup, partials summed in order per light.
+// CPU twin: sh::add_light / sh::fit_vsgl (the same VPLs from the same triangles).
+#include <span>
+
+#include "base/result.h"
+#include "gpu/draw_item.h"
+#include "gpu/frame_passes.h"
+#include "gpu/pass_barriers.h"
+
+namespace proxygi::gpu {
+
+class VsglLightsPass {
+ public:
+  struct Inputs {
+    const Buffer* constants = nullptr;  // FrameConstants (irradiance_sh)
+    std::span<const DrawItem> draws;    // only those with vsgl_light ≥ 0 are senders
+    // render.vsgl_lights: triangles [k T/K, (k+1) T/K) of each draw of sender s are light s·K + k
+    // (integer division, T the draw's triangle count); lights ≥ kVsglMaxLights are skipped.
+    std::uint32_t lights_per_sender = 1;
+  };
+  struct Outputs {
+    const Buffer* partials = nullptr;
+    const Buffer* lights = nullptr;
+  };
+  static constexpr FramePass kPass = FramePass::indirect;
+  // Bytes of the two outputs.
+  static std::size_t partials_bytes();
+  static std::size_t lights_bytes();
+
+  static Result<VsglLightsPass> create(const Context& context);
+  std::vector<ResourceAccess> accesses(const Inputs& in, const Outputs& out) const;
+  void record(const Context& context, VkCommandBuffer commands, const Inputs& in, const Outputs& out) const;
+
+ private:
+  Pipeline pipeline_;
+};
+
+}  // namespace proxygi::gpu
