@@ -181,8 +181,8 @@ TEST(SceneParse, MinimalSceneTakesEveryDefault) {
 
 // Files written before render.indirect_method keep their meaning.
 TEST(SceneParse, TheOlderIndirectBooleanReadsAsAnIndirectMethod) {
-  for (const auto& [text, expected] : {std::pair{R"({"render": {"indirect": false}})", settings::IndirectMethod::none},
-                                       std::pair{R"({"render": {"indirect": true}})", settings::IndirectMethod::proxy}}) {
+  for (const auto& [text, expected] : {std::pair{R"({"schema_version": 1, "render": {"indirect": false}})", settings::IndirectMethod::none},
+                                       std::pair{R"({"schema_version": 1, "render": {"indirect": true}})", settings::IndirectMethod::proxy}}) {
     auto scene = parse_scene(text, "old.json");
     ASSERT_TRUE(scene.ok()) << scene.message();
     EXPECT_EQ(scene->render.indirect_method, expected) << text;
