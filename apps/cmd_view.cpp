@@ -71,6 +71,7 @@ void add_view_command(CLI::App& app, CommandRunner& runner) {
   command->add_flag("--validation", args->validation, "Vulkan validation on; any message fails the run");
   command->add_option("--max-frames", args->max_frames, "quit after N frames")->check(CLI::NonNegativeNumber);
   command->add_option("--state-out", args->state_out, "write the final viewer state as JSON (tests)");
+  add_quiet_flag(*command);
   add_device_option(*command, args->device);
   command->callback([args, started, &runner] { runner = [args, started] { return run_view(*args, started); }; });
 }

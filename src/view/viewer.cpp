@@ -153,7 +153,9 @@ Status Viewer::adopt(Result<LoadedScene> loaded) {
     ++previews_;
   } else if (previews_ > 0 && keep) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - options_.started).count();
-    std::fprintf(stderr, "view: proxies of %s on after %.2f s\n", name_.c_str(), seconds);
+    char line[64];
+    std::snprintf(line, sizeof line, " on after %.2f s", seconds);
+    log_info("view: proxies of " + name_ + line);
   }
   return {};
 }

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "scene/scene_write.h"
+#include "base/log.h"
 #include "settings/fields.h"
 #include "view/viewer.h"
 
@@ -69,7 +70,7 @@ Status Viewer::write_screenshot(const std::vector<std::uint8_t>& rgba, std::uint
   if (!options_.write_png) return make_error("screenshot: no PNG writer");
   if (Status s = options_.write_png(file, rgba, int(width), int(height)); !s) return s;
   if (core_) core_->state().notice = "screenshot " + file.string();
-  std::fprintf(stderr, "view: wrote %s\n", file.string().c_str());
+  log_info("view: wrote " + file.string());
   return {};
 }
 

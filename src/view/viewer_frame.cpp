@@ -102,8 +102,10 @@ Status Viewer::render_into(const TargetImage& target) {
     if (Status s = finish_all(); !s) return s;  // measured to the frame's completion
     first_frame_logged_ = true;
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - options_.started).count();
-    std::fprintf(stderr, "view: first frame of %s after %.2f s%s\n", name_.c_str(), seconds,
-                 world_->proxy_count() == 0 && loader_.busy() ? " (without proxies: rigs are being fitted)" : "");
+    char line[64];
+    std::snprintf(line, sizeof line, " after %.2f s", seconds);
+    log_info("view: first frame of " + name_ + line +
+             (world_->proxy_count() == 0 && loader_.busy() ? " (without proxies: rigs are being fitted)" : ""));
   }
   rendered_last_ = true;
   if (world_->proxy_count() == 0 && loader_.busy() && ++frames_without_proxies_ >= options_.hold_rigs_frames &&

@@ -18,7 +18,8 @@ set(commands
   "regress~${WORK}/scenario.json~--report~${WORK}/report"
   "bench~sh~--receivers~20~--orders~3~--min-time~0.001"
   "bench~micro~--filter~^sh/~--min-time~0.001"
-  "devices")
+  "devices"
+  "view~default~--offscreen~--max-frames~2~--width~16~--height~16")
 set(failures "")
 foreach(entry ${commands})
   string(REPLACE "~" ";" args "${entry}")
