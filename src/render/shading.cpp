@@ -108,7 +108,8 @@ DirectResult exponentiate_and_shade(const FrameTables& tables, std::span<const f
     lookup_lighting_cube(tables.lighting_cube[std::size_t(set + channel)], normal, lh);
     float irradiance = 0.0f;
     for (std::size_t i = 0; i < count; ++i) irradiance += visibility[i] * lh[i];
-    result.irradiance[channel] = std::max(irradiance, 0.0f);
+    // F4: the band-limited visibility rings; a blocker can only take light away (exponentiate.comp).
+    result.irradiance[channel] = std::clamp(irradiance, 0.0f, std::max(kSqrtFourPi * lh[0], 0.0f));
   }
   return result;
 }

@@ -35,6 +35,7 @@ struct DirectResult {
   int squarings = 0;            // HYB squarings used
 };
 // LH(N) from the cube set of receiver point p (lighting_cube_set: ground-lit above the ground).
+// E is clamped per channel to [0, E_unshadowed = √4π LH_0]: SH ringing must never brighten (F4).
 DirectResult exponentiate_and_shade(const FrameTables& tables, std::span<const float> log_occlusion, float tau,
                                     const glm::vec3& p, const glm::vec3& normal);
 
