@@ -2,6 +2,7 @@
 // Exponentiation and direct shading (frame step 5): O_p = exp*(f) by HYB (DC isolation, OL on
 // f̂/2^s, s squarings), then E_direct = O_p · LH(N) per colour from the LH cube maps (the
 // ground-lit set for receivers above the ground, lighting_cube_set).
+// E is clamped to [0, E_unshadowed] per channel (ringing, notes F4).
 // Output per receiver: (E_r, E_g, E_b, (O_p)_0). CPU twin: render::exponentiate_and_shade.
 #extension GL_GOOGLE_include_directive : require
 #include "frame_common.glsl"
@@ -82,7 +83,9 @@ void main() {
     lighting_lookup(set + channel, r.normal.xyz, lh);
     float sum = 0.0;
     for (int i = 0; i < SH_COUNT; ++i) sum += g[i] * lh[i];
-    irradiance[channel] = max(sum, 0.0);
+    // F4: band-limited visibility rings (overshoots 1 beside large, overlapping caps), so bound
+    // E by [0, unshadowed]: a blocker can only take light away. Unshadowed = O ≡ 1 = √4π y_0.
+    irradiance[channel] = clamp(sum, 0.0, max(kSqrtFourPi * lh[0], 0.0));
   }
   direct[index] = vec4(irradiance, g[0]);
 }

@@ -3,7 +3,9 @@
 // pass already has its G-buffer texel, so fusing them saves a full-resolution round trip).
 // Step 7: display-resolution irradiance E = E_direct + E_indirect from the 2×2 surrounding
 // receivers with the joint-bilateral weights of eq. 11 (bilinear × depth × normal^32), or plain
-// bilinear; where every weight vanishes, the valid tap nearest in depth (written as an AOV).
+// bilinear. The depth term is the tap's distance to the pixel's tangent plane over eye depth (F8:
+// scale-invariant). Where every weight vanishes, bilinear × that term alone (interpolating), and
+// only where that is 0 too the valid tap nearest in depth.
 // Step 8: radiance = albedo/π · E on covered pixels, the environment along the view ray
 // elsewhere; HDR linear out and tonemapped sRGB 8-bit out (packed RGBA8).
 // Vertex method (frame.composite_mode == kCompositeDisplayIrradiance): step 7 is the rasterizer's
@@ -55,8 +57,8 @@ float linear_to_srgb(float value) {
 }
 
 // Step 7's taps for a covered pixel: the valid receivers of the 2×2 around it with their weights
-// (eq. 11 or bilinear) and shaded values; when every weight vanishes, the tap nearest in depth
-// alone (weight 1). Any receiver quantity upsamples as Σ w_i v_i / weight_sum with these taps, so
+// (eq. 11 or bilinear) and shaded values; when every weight vanishes, the same taps weighted by
+// bilinear × tangent-plane term, and when that is 0 the tap nearest in depth alone (weight 1). Any receiver quantity upsamples as Σ w_i v_i / weight_sum with these taps, so
 // the direct and indirect views sum to the final frame's irradiance.
 struct UpsampleTaps {
   uint index[4];
@@ -66,7 +68,7 @@ struct UpsampleTaps {
   float weight_sum;
 };
 
-UpsampleTaps upsample_taps(uvec2 pixel, float depth) {
+UpsampleTaps upsample_taps(uvec2 pixel, vec3 position, float depth) {
   vec3 normal = imageLoad(normal_image, ivec2(pixel)).xyz;
   ivec2 receiver_size = ivec2(uvec2(frame.receiver_width, frame.receiver_height));
   float k = float(frame.receiver_scale);
@@ -78,7 +80,8 @@ UpsampleTaps upsample_taps(uvec2 pixel, float depth) {
   float epsilon = frame.bilateral_depth_epsilon;
   UpsampleTaps taps;
   taps.count = 0;
-  float weight_sum = 0.0, bilinear_sum = 0.0;
+  float weight_sum = 0.0, bilinear_sum = 0.0, fallback_sum = 0.0;
+  float fallback[4];
   float nearest_gap = 1e30;
   uint nearest_index = 0u;
   vec3 nearest_value = vec3(0.0);
@@ -100,8 +103,14 @@ UpsampleTaps upsample_taps(uvec2 pixel, float depth) {
       facing *= facing;
       facing *= facing;
       facing *= facing;
-      weight *= facing / (epsilon + abs(depth - tap_depth));
-      weight *= epsilon;
+      float plane_gap = abs(dot(normal, receivers[index].position_depth.xyz - position)) / depth;
+      float near_plane = epsilon / (epsilon + plane_gap);
+      fallback[taps.count] = weight * near_plane;
+      fallback_sum += weight * near_plane;
+      weight *= facing * near_plane;
+    } else {
+      fallback[taps.count] = weight;
+      fallback_sum += weight;
     }
     taps.index[taps.count] = index;
     taps.weight[taps.count] = weight;
@@ -116,7 +125,10 @@ UpsampleTaps upsample_taps(uvec2 pixel, float depth) {
     }
   }
   taps.weight_sum = weight_sum;
-  if (!(weight_sum > 1e-6 * max(bilinear_sum, 1e-30))) {
+  if (!(weight_sum > 1e-6 * max(bilinear_sum, 1e-30)) && fallback_sum > 0.0) {
+    for (int t = 0; t < taps.count; ++t) taps.weight[t] = fallback[t];
+    taps.weight_sum = fallback_sum;
+  } else if (!(weight_sum > 1e-6 * max(bilinear_sum, 1e-30))) {
     taps.count = 1;
     taps.index[0] = nearest_index;
     taps.weight[0] = 1.0;
@@ -172,7 +184,7 @@ void main() {
     if (frame.composite_mode == kCompositeDisplayIrradiance) {
       e = imageLoad(normal_image, ivec2(pixel)).rgb;
     } else {
-      taps = upsample_taps(pixel, position_depth.w);
+      taps = upsample_taps(pixel, position_depth.xyz, position_depth.w);
       e = upsample_shaded(taps);
     }
     irradiance[index] = vec4(e, 1.0);

@@ -93,7 +93,7 @@ struct FrameConstants {
   float lighting_cube_face_size; // LH cube texels per face edge
   float exposure;                // multiplier before the tonemap (2^EV)
   uint tonemap;                  // kTonemapAces, kTonemapReinhard or kTonemapClamp
-  float bilateral_depth_epsilon; // ε of eq. 11 (m)
+  float bilateral_depth_epsilon; // ε of eq. 11 (tangent-plane distance / eye depth)
   uint indirect_enabled;         // 0: no bounce light
   uint debug_view;               // kDebugView*: what the composite writes (the viewer's views)
   uint tile_counts_valid;        // 1: the shadow pass wrote the TileCounts buffer (compute gather, AO)

@@ -108,7 +108,8 @@ DirectResult exponentiate_and_shade(const FrameTables& tables, std::span<const f
     lookup_lighting_cube(tables.lighting_cube[std::size_t(set + channel)], normal, lh);
     float irradiance = 0.0f;
     for (std::size_t i = 0; i < count; ++i) irradiance += visibility[i] * lh[i];
-    result.irradiance[channel] = std::max(irradiance, 0.0f);
+    // F4: the band-limited visibility rings; a blocker can only take light away (exponentiate.comp).
+    result.irradiance[channel] = std::clamp(irradiance, 0.0f, std::max(kSqrtFourPi * lh[0], 0.0f));
   }
   return result;
 }
@@ -176,24 +177,31 @@ IndirectResult accumulate_indirect(const FrameTables& tables, const glm::vec3& p
   return result;
 }
 
-glm::vec3 upsample(std::span<const UpsampleTap, 4> taps, float depth, const glm::vec3& normal, settings::Upsampling mode,
-                   float depth_epsilon) {
-  glm::vec3 total(0.0f);
-  float weight_sum = 0.0f, bilinear_sum = 0.0f;
+glm::vec3 upsample(std::span<const UpsampleTap, 4> taps, const glm::vec3& position, float depth, const glm::vec3& normal,
+                   settings::Upsampling mode, float depth_epsilon) {
+  glm::vec3 total(0.0f), fallback_total(0.0f);
+  float weight_sum = 0.0f, bilinear_sum = 0.0f, fallback_sum = 0.0f;
   for (const auto& tap : taps) {
     if (tap.depth <= 0.0f) continue;
     float weight = tap.bilinear_weight;
     bilinear_sum += tap.bilinear_weight;
     if (mode == settings::Upsampling::bilateral) {
+      // F8: the tap's distance to this pixel's tangent plane over its eye depth, so a plane seen
+      // at any angle and distance weighs its taps bilinearly (scale-invariant; ε dimensionless).
+      const float gap = std::abs(glm::dot(normal, tap.position - position)) / depth;
+      const float near_plane = depth_epsilon / (depth_epsilon + gap);
+      fallback_total += weight * near_plane * tap.value;
+      fallback_sum += weight * near_plane;
       const float facing = std::max(glm::dot(normal, tap.normal), 0.0f);
-      weight *= std::pow(facing, 32.0f) / (depth_epsilon + std::abs(depth - tap.depth));
-      weight *= depth_epsilon;  // keeps weights O(1) so the vanishing test below is scale-free
+      weight *= std::pow(facing, 32.0f) * near_plane;
     }
     total += weight * tap.value;
     weight_sum += weight;
   }
   if (weight_sum > 1e-6f * std::max(bilinear_sum, 1e-30f)) return total / weight_sum;
-  // Fallback: the valid tap nearest in depth.
+  // Fallback: interpolate by bilinear × tangent-plane weight alone (the normals disagree).
+  if (fallback_sum > 0.0f) return fallback_total / fallback_sum;
+  // No weight at all (taps with bilinear weight 0): the valid tap nearest in depth.
   const UpsampleTap* nearest = nullptr;
   for (const auto& tap : taps)
     if (tap.depth > 0.0f && (!nearest || std::abs(tap.depth - depth) < std::abs(nearest->depth - depth))) nearest = &tap;

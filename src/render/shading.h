@@ -35,6 +35,7 @@ struct DirectResult {
   int squarings = 0;            // HYB squarings used
 };
 // LH(N) from the cube set of receiver point p (lighting_cube_set: ground-lit above the ground).
+// E is clamped per channel to [0, E_unshadowed = √4π LH_0]: SH ringing must never brighten (F4).
 DirectResult exponentiate_and_shade(const FrameTables& tables, std::span<const float> log_occlusion, float tau,
                                     const glm::vec3& p, const glm::vec3& normal);
 
@@ -74,17 +75,23 @@ glm::ivec2 select_receiver(int rx, int ry, int k, int width, int height, DepthAt
   return {-1, -1};
 }
 
-// Bilateral upsampling weights of paper eq. 11 for one display pixel from its 2×2 receivers.
+// Bilateral upsampling weights of paper eq. 11 for one display pixel from its 2×2 receivers:
+// w = w^b · max(N·N_i, 0)^32 · ε/(ε + |N·(P_i − P)|/z), where P, N, z are the pixel's world
+// position, normal and eye depth and P_i the receiver's position: the depth term measures the tap's
+// distance to the pixel's tangent plane relative to eye depth (F8: scale-invariant, so a ground
+// plane at a grazing angle interpolates bilinearly); ε (bilateral_depth_epsilon) is dimensionless.
 struct UpsampleTap {
   glm::vec3 value{0.0f};
+  glm::vec3 position{0.0f};      // world space, m
   float depth = 0.0f;            // eye depth; 0 = no receiver there
   glm::vec3 normal{0.0f, 1.0f, 0.0f};
   float bilinear_weight = 0.0f;  // w^b
 };
 // Returns the interpolated value; when every weight vanishes (< 1e-6 of the bilinear total),
-// falls back to the valid tap with the closest depth.
-glm::vec3 upsample(std::span<const UpsampleTap, 4> taps, float depth, const glm::vec3& normal, settings::Upsampling mode,
-                   float depth_epsilon);
+// falls back to interpolating by w^b × the tangent-plane term alone, and only when that is 0 too
+// to the valid tap with the closest depth.
+glm::vec3 upsample(std::span<const UpsampleTap, 4> taps, const glm::vec3& position, float depth, const glm::vec3& normal,
+                   settings::Upsampling mode, float depth_epsilon);
 
 // Linear radiance × exposure → display-referred linear [0, 1] (before the sRGB encoding).
 glm::vec3 tonemap(const glm::vec3& radiance, float exposure, settings::Tonemap curve);

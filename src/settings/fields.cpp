@@ -107,7 +107,7 @@ const std::vector<Field>& table() {
       real<&S::hyb_tau>("hyb_tau", "HYB: halve until the log vector's norm is at most τ", kNeedConstants, 0.0, 0.01, 2.0),
       choice<&S::upsampling>("upsampling", "receivers to display: joint-bilateral (eq. 11) or bilinear", kNeedConstants,
                              kUpsamplingChoices),
-      real<&S::bilateral_depth_epsilon>("bilateral_depth_epsilon", "ε of the bilateral depth weight, meters",
+      real<&S::bilateral_depth_epsilon>("bilateral_depth_epsilon", "ε of the bilateral depth weight: tangent-plane distance / eye depth",
                                         kNeedConstants, 0.0, 0.001, 1.0),
       choice<&S::splat>("splat", "log-occlusion accumulation: tiled compute gather or raster splat", kNeedPipelines,
                         kSplatChoices),

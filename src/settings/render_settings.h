@@ -59,7 +59,9 @@ struct RenderSettings {
   Exponential exponential = Exponential::hyb;
   float hyb_tau = 0.25f;        // HYB: halve until |f̂| ≤ τ, > 0
   Upsampling upsampling = Upsampling::bilateral;
-  float bilateral_depth_epsilon = 0.05f;  // ε of eq. 11, meters of eye depth, > 0
+  // ε of eq. 11's depth term, dimensionless, > 0: a tap's distance to the pixel's tangent plane is
+  // measured in units of the pixel's eye depth (F8; before 2026-12 it was meters of eye depth).
+  float bilateral_depth_epsilon = 0.01f;
   SplatMethod splat = SplatMethod::compute;  // the gather measured faster on lavapipe (README)
   IndirectMethod indirect_method = IndirectMethod::proxy;
   int vsgl_lights = 1;          // VSGL lights per character, one of kVsglLightsPerCharacter

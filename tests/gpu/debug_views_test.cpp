@@ -62,7 +62,7 @@ float relative_error(const glm::vec3& gpu, const glm::vec3& cpu) {
 }
 
 // The CPU twin of the composite's upsampling of a receiver quantity at display pixel (x, y).
-glm::vec3 upsample_at(int x, int y, int scale, const image::ImageF& values, const image::ImageF& shaded,
+glm::vec3 upsample_at(int x, int y, int scale, const image::ImageF& values, const image::ImageF& receiver_positions,
                       const image::ImageF& receiver_normals, const image::ImageF& gbuffer_positions,
                       const image::ImageF& gbuffer_normals, const std::function<glm::vec3(const glm::vec4&)>& pick) {
   const int receivers = kSize / scale;
@@ -74,12 +74,13 @@ glm::vec3 upsample_at(int x, int y, int scale, const image::ImageF& values, cons
     const glm::ivec2 offset(tap & 1, tap >> 1);
     const glm::ivec2 source = glm::clamp(base + offset, glm::ivec2(0), glm::ivec2(receivers - 1));
     taps[std::size_t(tap)].value = pick(values.at(source.x, source.y));
-    taps[std::size_t(tap)].depth = shaded.at(source.x, source.y).w;
+    taps[std::size_t(tap)].position = glm::vec3(receiver_positions.at(source.x, source.y));
+    taps[std::size_t(tap)].depth = receiver_positions.at(source.x, source.y).w;
     taps[std::size_t(tap)].normal = glm::vec3(receiver_normals.at(source.x, source.y));
     taps[std::size_t(tap)].bilinear_weight =
         (offset.x == 1 ? fraction.x : 1.0f - fraction.x) * (offset.y == 1 ? fraction.y : 1.0f - fraction.y);
   }
-  return render::upsample(taps, gbuffer_positions.at(x, y).w, glm::vec3(gbuffer_normals.at(x, y)),
+  return render::upsample(taps, glm::vec3(gbuffer_positions.at(x, y)), gbuffer_positions.at(x, y).w, glm::vec3(gbuffer_normals.at(x, y)),
                           settings::Upsampling::bilateral, settings::RenderSettings{}.bilateral_depth_epsilon);
 }
 
@@ -102,8 +103,9 @@ TEST_F(DebugViewsTest, DirectIndirectAndOcclusionAreTheFinalFramesComponents) {
     auto indirect = views.frame->read_indirect();
     auto shaded = views.frame->read_shaded();
     auto receiver_normals = views.frame->read_receiver_normals();
+    auto receiver_positions = views.frame->read_receiver_positions();
     ASSERT_TRUE(positions.ok() && normals.ok() && albedo.ok() && direct.ok() && indirect.ok() && shaded.ok() &&
-                receiver_normals.ok());
+                receiver_normals.ok() && receiver_positions.ok());
     const float occlusion_scale = method == settings::ShadingMethod::ambient_occlusion ? 1.0f : 1.0f / std::sqrt(4.0f * kPi);
     const image::ImageF& final_hdr = views.hdr.at(kDebugViewFinal);
     int covered = 0, shadowed = 0, open = 0, bounced = 0;
@@ -122,13 +124,13 @@ TEST_F(DebugViewsTest, DirectIndirectAndOcclusionAreTheFinalFramesComponents) {
         EXPECT_LE(relative_error(direct_view + indirect_view, final_radiance), 1e-4f) << "direct + indirect at " << x << "," << y;
         const glm::vec3 surface = glm::vec3(albedo->at(x, y)) / kPi;
         auto rgb = [](const glm::vec4& v) { return glm::vec3(v); };
-        const glm::vec3 expected_direct = surface * upsample_at(x, y, 2, *direct, *shaded, *receiver_normals, *positions, *normals, rgb);
+        const glm::vec3 expected_direct = surface * upsample_at(x, y, 2, *direct, *receiver_positions, *receiver_normals, *positions, *normals, rgb);
         EXPECT_LE(relative_error(direct_view, expected_direct), 1e-3f) << "direct at " << x << "," << y;
-        const glm::vec3 expected_indirect = surface * upsample_at(x, y, 2, *indirect, *shaded, *receiver_normals, *positions, *normals, rgb);
+        const glm::vec3 expected_indirect = surface * upsample_at(x, y, 2, *indirect, *receiver_positions, *receiver_normals, *positions, *normals, rgb);
         EXPECT_LE(glm::length(indirect_view - expected_indirect), 1e-3f * std::max(glm::length(final_radiance), 1e-3f))
             << "indirect at " << x << "," << y;
         const float expected_visible = std::clamp(
-            upsample_at(x, y, 2, *direct, *shaded, *receiver_normals, *positions, *normals,
+            upsample_at(x, y, 2, *direct, *receiver_positions, *receiver_normals, *positions, *normals,
                         [&](const glm::vec4& v) { return glm::vec3(v.w * occlusion_scale); }).x, 0.0f, 1.0f);
         EXPECT_NEAR(occlusion.x, expected_visible, 1e-4f) << "occlusion at " << x << "," << y;
         EXPECT_GE(occlusion.x, 0.0f);

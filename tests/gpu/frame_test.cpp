@@ -218,12 +218,13 @@ TEST_F(FrameDisplayTest, ReceiversUpsampleAndCompositeMatchCpuTwins) {
         const glm::ivec2 offset(tap & 1, tap >> 1);
         const glm::ivec2 source = glm::clamp(base + offset, glm::ivec2(0), glm::ivec2(receivers - 1));
         taps[std::size_t(tap)].value = glm::vec3(shaded->at(source.x, source.y));
+        taps[std::size_t(tap)].position = glm::vec3(receiver_positions->at(source.x, source.y));
         taps[std::size_t(tap)].depth = shaded->at(source.x, source.y).w;
         taps[std::size_t(tap)].normal = glm::vec3(receiver_normals->at(source.x, source.y));
         taps[std::size_t(tap)].bilinear_weight = (offset.x == 1 ? fraction.x : 1.0f - fraction.x) *
                                                  (offset.y == 1 ? fraction.y : 1.0f - fraction.y);
       }
-      const glm::vec3 expected = render::upsample(taps, p.w, glm::vec3(gbuffer_normals->at(x, y)),
+      const glm::vec3 expected = render::upsample(taps, glm::vec3(p), p.w, glm::vec3(gbuffer_normals->at(x, y)),
                                                   settings::Upsampling::bilateral, settings::RenderSettings{}.bilateral_depth_epsilon);
       EXPECT_LE(relative_error(glm::vec3(irradiance->at(x, y)), expected), 1e-3f) << "upsample at " << x << "," << y;
 
