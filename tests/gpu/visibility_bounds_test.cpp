@@ -69,7 +69,7 @@ TEST_F(VisibilityBoundsTest, NoReceiverIsBrighterThanUnshadowedNorNegative) {
     FrameConfig config;
     config.width = config.height = 64;
     config.render.receiver_scale = 1;
-    config.render.indirect = false;
+    config.render.indirect_method = settings::IndirectMethod::none;
     const sh::RgbSh sky = sh::project_sky(order, high_sun());
     auto rendered = testing::render_fixture_frame(context(), config, sky, order, testing::ground_plane(20.0f, 4), spheres,
                                                   {0.0f, 4.5f, 4.5f});
