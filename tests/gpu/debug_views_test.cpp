@@ -9,6 +9,7 @@
 #include "frame_fixture.h"
 #include "gpu_test_context.h"
 #include "render/shading.h"
+#include "upsample_taps.h"
 #include "shaders/shared/layouts.h"
 
 namespace proxygi::gpu {
@@ -65,21 +66,9 @@ float relative_error(const glm::vec3& gpu, const glm::vec3& cpu) {
 glm::vec3 upsample_at(int x, int y, int scale, const image::ImageF& values, const image::ImageF& receiver_positions,
                       const image::ImageF& receiver_normals, const image::ImageF& gbuffer_positions,
                       const image::ImageF& gbuffer_normals, const std::function<glm::vec3(const glm::vec4&)>& pick) {
-  const int receivers = kSize / scale;
-  const glm::vec2 coordinate = (glm::vec2(x, y) + 0.5f) / float(scale) - 0.5f;
-  const glm::ivec2 base = glm::ivec2(glm::floor(coordinate));
-  const glm::vec2 fraction = coordinate - glm::vec2(base);
-  std::array<render::UpsampleTap, 4> taps;
-  for (int tap = 0; tap < 4; ++tap) {
-    const glm::ivec2 offset(tap & 1, tap >> 1);
-    const glm::ivec2 source = glm::clamp(base + offset, glm::ivec2(0), glm::ivec2(receivers - 1));
-    taps[std::size_t(tap)].value = pick(values.at(source.x, source.y));
-    taps[std::size_t(tap)].position = glm::vec3(receiver_positions.at(source.x, source.y));
-    taps[std::size_t(tap)].depth = receiver_positions.at(source.x, source.y).w;
-    taps[std::size_t(tap)].normal = glm::vec3(receiver_normals.at(source.x, source.y));
-    taps[std::size_t(tap)].bilinear_weight =
-        (offset.x == 1 ? fraction.x : 1.0f - fraction.x) * (offset.y == 1 ? fraction.y : 1.0f - fraction.y);
-  }
+  const auto taps = testing::upsample_taps(
+      x, y, scale, kSize / scale, [&](int rx, int ry) { return pick(values.at(rx, ry)); }, receiver_positions,
+      receiver_positions, receiver_normals);
   return render::upsample(taps, glm::vec3(gbuffer_positions.at(x, y)), gbuffer_positions.at(x, y).w, glm::vec3(gbuffer_normals.at(x, y)),
                           settings::Upsampling::bilateral, settings::RenderSettings{}.bilateral_depth_epsilon);
 }

@@ -6,6 +6,7 @@
 #include "gpu/transfer.h"
 #include "gpu_test_context.h"
 #include "render/shading.h"
+#include "upsample_taps.h"
 
 namespace proxygi::gpu {
 namespace {
@@ -210,20 +211,9 @@ TEST_F(FrameDisplayTest, ReceiversUpsampleAndCompositeMatchCpuTwins) {
         ++background;
         continue;
       }
-      const glm::vec2 coordinate = (glm::vec2(x, y) + 0.5f) / float(kScale) - 0.5f;
-      const glm::ivec2 base = glm::ivec2(glm::floor(coordinate));
-      const glm::vec2 fraction = coordinate - glm::vec2(base);
-      std::array<render::UpsampleTap, 4> taps;
-      for (int tap = 0; tap < 4; ++tap) {
-        const glm::ivec2 offset(tap & 1, tap >> 1);
-        const glm::ivec2 source = glm::clamp(base + offset, glm::ivec2(0), glm::ivec2(receivers - 1));
-        taps[std::size_t(tap)].value = glm::vec3(shaded->at(source.x, source.y));
-        taps[std::size_t(tap)].position = glm::vec3(receiver_positions->at(source.x, source.y));
-        taps[std::size_t(tap)].depth = shaded->at(source.x, source.y).w;
-        taps[std::size_t(tap)].normal = glm::vec3(receiver_normals->at(source.x, source.y));
-        taps[std::size_t(tap)].bilinear_weight = (offset.x == 1 ? fraction.x : 1.0f - fraction.x) *
-                                                 (offset.y == 1 ? fraction.y : 1.0f - fraction.y);
-      }
+      const auto taps = testing::upsample_taps(
+          x, y, kScale, receivers, [&](int rx, int ry) { return glm::vec3(shaded->at(rx, ry)); }, *receiver_positions,
+          *shaded, *receiver_normals);
       const glm::vec3 expected = render::upsample(taps, glm::vec3(p), p.w, glm::vec3(gbuffer_normals->at(x, y)),
                                                   settings::Upsampling::bilateral, settings::RenderSettings{}.bilateral_depth_epsilon);
       EXPECT_LE(relative_error(glm::vec3(irradiance->at(x, y)), expected), 1e-3f) << "upsample at " << x << "," << y;

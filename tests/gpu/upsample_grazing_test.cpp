@@ -13,6 +13,7 @@
 #include "frame_fixture.h"
 #include "gpu_test_context.h"
 #include "render/shading.h"
+#include "upsample_taps.h"
 
 namespace proxygi::gpu {
 namespace {
@@ -86,22 +87,11 @@ TEST_F(UpsampleGrazingTest, GroundPlaneInterpolatesBilinearlyAndMatchesTheCpuTwi
       const glm::vec4 p = gbuffer_positions->at(x, y);
       if (p.w <= 0.0f) continue;
       ++covered;
-      const glm::vec2 coordinate = (glm::vec2(x, y) + 0.5f) / float(kScale) - 0.5f;
-      const glm::ivec2 base = glm::ivec2(glm::floor(coordinate));
-      const glm::vec2 fraction = coordinate - glm::vec2(base);
-      std::array<render::UpsampleTap, 4> taps;
+      const auto taps = testing::upsample_taps(
+          x, y, kScale, receivers, [&](int rx, int ry) { return glm::vec3(shaded->at(rx, ry)); }, *receiver_positions,
+          *shaded, *receiver_normals);
       bool all_on_ground = p.y < kOnGround;
-      for (int tap = 0; tap < 4; ++tap) {
-        const glm::ivec2 offset(tap & 1, tap >> 1);
-        const glm::ivec2 source = glm::clamp(base + offset, glm::ivec2(0), glm::ivec2(receivers - 1));
-        auto& t = taps[std::size_t(tap)];
-        t.value = glm::vec3(shaded->at(source.x, source.y));
-        t.position = glm::vec3(receiver_positions->at(source.x, source.y));
-        t.depth = shaded->at(source.x, source.y).w;
-        t.normal = glm::vec3(receiver_normals->at(source.x, source.y));
-        t.bilinear_weight = (offset.x == 1 ? fraction.x : 1.0f - fraction.x) * (offset.y == 1 ? fraction.y : 1.0f - fraction.y);
-        all_on_ground = all_on_ground && t.depth > 0.0f && t.position.y < kOnGround;
-      }
+      for (const render::UpsampleTap& t : taps) all_on_ground = all_on_ground && t.depth > 0.0f && t.position.y < kOnGround;
       const glm::vec3 gpu(bilateral.irradiance.at(x, y));
       const glm::vec3 expected = render::upsample(taps, glm::vec3(p), p.w, glm::vec3(gbuffer_normals->at(x, y)),
                                                   settings::Upsampling::bilateral, epsilon);
