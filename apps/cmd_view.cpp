@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "apps/commands.h"
+#include "settings/limits.h"
 #include "image/image.h"
 #include "view/viewer_app.h"
 
@@ -62,8 +63,8 @@ void add_view_command(CLI::App& app, CommandRunner& runner) {
   command->add_option("scene", args->open, "scene .json, model .glb/.gltf or 'mannequin' (on record's stage), 'default' or 'crowd' (default: default)");
   command->add_option("--script", args->script, "run time-stamped events from FILE.json on a fixed time step");
   command->add_flag("--offscreen", args->offscreen, "render into an image instead of a window (no display needed)");
-  command->add_option("--width", args->width, "window / image width")->check(CLI::Range(16, 8192));
-  command->add_option("--height", args->height, "window / image height")->check(CLI::Range(16, 8192));
+  command->add_option("--width", args->width, "window / image width")->check(CLI::Range(settings::kMinImageSize, settings::kMaxImageSize));
+  command->add_option("--height", args->height, "window / image height")->check(CLI::Range(settings::kMinImageSize, settings::kMaxImageSize));
   command->add_flag("--no-vsync", args->no_vsync, "present with mailbox or immediate instead of FIFO");
   command->add_flag("--no-adaptive", args->no_adaptive, "never lower the internal resolution");
   command->add_flag("--no-ui", args->no_ui, "hide the UI (as F10)");
