@@ -55,13 +55,10 @@ set(cases
   "regress scenario bytes|${scene_bytes}|regress~${WORK}/huge.json"
   "compare image pixels|more than the limit of 67108864 pixels \\(8192 x 8192\\)|compare~${WORK}/huge.hdr~${WORK}/huge.hdr")
 
+include(${CMAKE_CURRENT_LIST_DIR}/case_table.cmake)
 set(failures "")
 foreach(entry ${cases})
-  string(REPLACE "|" ";" fields "${entry}")
-  list(GET fields 0 label)
-  list(GET fields 1 expected)
-  list(GET fields 2 args)
-  string(REPLACE "~" ";" args "${args}")
+  proxygi_split_case(entry label expected args)
   execute_process(COMMAND ${PROXYGI} ${args} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT code EQUAL 2 OR NOT err MATCHES "${expected}")
     set(failures "${failures}\n  ${label}: exit ${code} (expected 2), stderr '${err}' (expected '${expected}')")

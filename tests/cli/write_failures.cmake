@@ -23,13 +23,10 @@ set(cases
   "reference -o|${WORK}/ro/r.exr|reference~default~--frame~0~--spp~1~--width~16~--height~16~-o~${WORK}/ro/r.exr"
   "compare --error-image|${WORK}/ro/error.png|compare~${WORK}/images/a.exr~${WORK}/images/a.exr~--error-image~${WORK}/ro/error.png"
   "record -o|${WORK}/ro/record|record~default~--frames~0:0~--width~16~--height~16~-o~${WORK}/ro/record")
+include(${CMAKE_CURRENT_LIST_DIR}/case_table.cmake)
 set(failures "")
 foreach(entry ${cases})
-  string(REPLACE "|" ";" fields "${entry}")
-  list(GET fields 0 label)
-  list(GET fields 1 path)
-  list(GET fields 2 args)
-  string(REPLACE "~" ";" args "${args}")
+  proxygi_split_case(entry label path args)
   execute_process(COMMAND ${as_user} ${PROXYGI} ${args} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
   string(FIND "${err}" "${path}" named)
   if(NOT code EQUAL 1 OR named EQUAL -1 OR err MATCHES "\\.tmp-" OR out MATCHES "\\.tmp-")
