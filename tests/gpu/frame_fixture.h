@@ -2,6 +2,7 @@
 // A small test scene for the soft-GI frame: a 20 m ground plane at y = 0, proxy spheres above it,
 // a camera looking down at the origin, and a constant white sky (radiance 1), so the closed form
 // E = π − π (r/d)² cos β holds for a sphere fully above a receiver's horizon.
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -87,6 +88,46 @@ RenderedFrame render_fixture_frame(Context& context, FrameConfig config, const s
   EXPECT_TRUE(out.frame->write_slot(0, look_at(eye, {0.0f, 0.0f, 0.0f}, 60.0f, 1.0f), spheres).ok());
   EXPECT_TRUE(context.submit_and_wait([&](VkCommandBuffer commands) { out.frame->record(commands, 0, draws, FrameOutput::readback()); }).ok());
   return out;
+}
+
+// One receiver of a finished frame: its texel (receiver resolution), its index in the receiver
+// buffers (y · width + x), and its world-space position and unit normal.
+struct ReceiverSample {
+  int x = 0, y = 0;
+  std::size_t index = 0;
+  glm::vec3 position{0.0f}, normal{0.0f};
+};
+
+// Calls visit(sample) for every receiver with a position (w > 0) on a grid of `stride` texels.
+// The twin tests walk the receivers this way; the reads are reported through gtest.
+template <class Visit>
+void for_each_receiver(const SoftGiFrame& frame, int stride, Visit&& visit) {
+  auto positions = frame.read_receiver_positions();
+  auto normals = frame.read_receiver_normals();
+  ASSERT_TRUE(positions.ok() && normals.ok());
+  for (int y = 0; y < positions->height; y += stride)
+    for (int x = 0; x < positions->width; x += stride) {
+      const glm::vec4 p = positions->at(x, y);
+      if (p.w <= 0.0f) continue;
+      visit(ReceiverSample{x, y, std::size_t(y) * std::size_t(positions->width) + std::size_t(x), glm::vec3(p),
+                           glm::vec3(normals->at(x, y))});
+    }
+}
+
+// |gpu − cpu| and |cpu| of one receiver's log-occlusion vector, read from the frame's
+// receiver-major buffer (n² floats per receiver).
+struct VectorError {
+  float difference = 0.0f, norm = 0.0f;
+};
+inline VectorError log_occlusion_error(const std::vector<float>& gpu_buffer, std::size_t receiver,
+                                       const std::vector<float>& cpu) {
+  double difference = 0.0, norm = 0.0;
+  for (std::size_t i = 0; i < cpu.size(); ++i) {
+    const double gpu = gpu_buffer[receiver * cpu.size() + i];
+    difference += (gpu - cpu[i]) * (gpu - cpu[i]);
+    norm += double(cpu[i]) * cpu[i];
+  }
+  return {float(std::sqrt(difference)), float(std::sqrt(norm))};
 }
 
 }  // namespace proxygi::gpu::testing
