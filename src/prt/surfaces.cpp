@@ -6,6 +6,7 @@
 #include <limits>
 #include <unordered_map>
 
+#include "base/log.h"
 #include "render/texture_sampling.h"
 
 namespace proxygi::prt {
@@ -99,7 +100,10 @@ Result<StaticReceivers> static_receivers(const world::World& world, float spacin
   for (const world::StaticModel& model : world.static_models()) {
     for (const anim::PosedPrimitive& primitive : model.primitives) {
       const std::string name = "static_meshes[" + std::to_string(model.scene_static_mesh) + "]:" + primitive.name;
-      if (primitive.normals.size() != primitive.positions.size()) return make_error(name + ": no normals");
+      if (primitive.normals.size() != primitive.positions.size()) {  // as the renderers do: skipped
+        log_warning(name + ": no normals; not a PRT receiver");
+        continue;
+      }
       StaticSurface surface{name, primitive.positions, primitive.normals, primitive.indices, glm::vec3(1.0f)};
       const auto& materials = model.character.materials;
       if (model.albedo) {

@@ -49,8 +49,8 @@ StaticSurface subdivide(const StaticSurface& surface, float spacing_m);
 StaticSurface ground_patch(glm::vec2 patch_min, glm::vec2 patch_max, float spacing_m, const glm::vec3& albedo);
 
 // The world's static meshes (albedo override, else each primitive's material base color) and the
-// ground patch around them, subdivided. Fails when spacing_m is not positive or a primitive has
-// no normals ("static_meshes[i] <primitive>: no normals").
+// ground patch around them, subdivided. Primitives without normals are skipped with a warning
+// (as the renderers skip them). Fails when spacing_m is not positive.
 Result<StaticReceivers> static_receivers(const world::World& world, float spacing_m, float ground_margin_m);
 
 }  // namespace proxygi::prt

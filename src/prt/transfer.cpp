@@ -224,10 +224,11 @@ Status validate(const StaticReceivers& receivers, const TransferSettings& settin
   if (settings.order < settings::kMinShOrder || settings.order > settings::kMaxShOrder)
     return make_error("prt.order " + std::to_string(settings.order) + ": must be in " + std::to_string(settings::kMinShOrder) +
                       ".." + std::to_string(settings::kMaxShOrder));
-  if (settings.directions < 16 || settings.directions > 65536)
-    return make_error("prt.directions " + std::to_string(settings.directions) + ": must be in 16..65536");
-  if (settings.bounces < 0 || settings.bounces > 8)
-    return make_error("prt.bounces " + std::to_string(settings.bounces) + ": must be in 0..8");
+  if (settings.directions < kMinDirections || settings.directions > kMaxDirections)
+    return make_error("prt.directions " + std::to_string(settings.directions) + ": must be in " +
+                      std::to_string(kMinDirections) + ".." + std::to_string(kMaxDirections));
+  if (settings.bounces < 0 || settings.bounces > kMaxBounces)
+    return make_error("prt.bounces " + std::to_string(settings.bounces) + ": must be in 0.." + std::to_string(kMaxBounces));
   for (const StaticSurface& s : receivers.surfaces) {
     if (s.normals.size() != s.positions.size())
       return make_error(s.name + ": " + std::to_string(s.normals.size()) + " normals for " + std::to_string(s.positions.size()) +

@@ -27,10 +27,14 @@
 
 namespace proxygi::prt {
 
+inline constexpr int kMinDirections = 16;
+inline constexpr int kMaxDirections = 65536;
+inline constexpr int kMaxBounces = 8;
+
 struct TransferSettings {
   int order = 4;            // settings::kMinShOrder..kMaxShOrder (the proxy method's range)
-  int directions = 1024;    // K per vertex and pass, 16..65536
-  int bounces = 2;          // interreflection passes after the shadow pass, 0..8
+  int directions = 1024;    // K per vertex and pass, kMinDirections..kMaxDirections
+  int bounces = 2;          // interreflection passes after the shadow pass, 0..kMaxBounces
   std::uint32_t seed = 1;
   bool operator==(const TransferSettings&) const = default;
 };
