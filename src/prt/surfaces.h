@@ -45,7 +45,8 @@ struct StaticReceivers {
 // welds vertices closer than 1e-5 m with the same normal (shared edges of equal m weld exactly).
 StaticSurface subdivide(const StaticSurface& surface, float spacing_m);
 
-// A ground patch [min, max] in xz at y = 0 as a grid of `spacing_m` cells (normal +Y).
+// A ground patch [min, max] in xz at y = 0 as a grid of cells at most `spacing_m` a side, two
+// triangles each (normal +Y).
 StaticSurface ground_patch(glm::vec2 patch_min, glm::vec2 patch_max, float spacing_m, const glm::vec3& albedo);
 
 // The world's static meshes (albedo override, else each primitive's material base color) and the
