@@ -8,15 +8,14 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "apps/commands.h"
 #include "apps/scene_input.h"
+#include "proxies/rig_cache.h"
 #include "prt/surfaces.h"
 #include "prt/transfer_cache.h"
-#include "proxies/rig_cache.h"
 #include "settings/render_settings.h"
 #include "world/world.h"
 
@@ -79,16 +78,23 @@ int run_prt(PrtArgs& args) {
   if (!result) return fail_bad_input(result.message());
   const prt::TransferSet& t = result->transfer;
   if (args.json) {
-    nlohmann::json out = {{"surfaces", receivers->surfaces.size()}, {"vertices", vertices}, {"triangles", triangles},
-                          {"spacing_m", args.spacing_m}, {"order", t.order}, {"directions", args.transfer.directions},
-                          {"bounces", args.transfer.bounces}, {"from_cache", result->from_cache},
-                          {"cache_file", result->file.string()}, {"bytes", t.bytes()}};
+    nlohmann::json out = {{"surfaces", receivers->surfaces.size()},
+                          {"vertices", vertices},
+                          {"triangles", triangles},
+                          {"spacing_m", args.spacing_m},
+                          {"order", t.order},
+                          {"directions", args.transfer.directions},
+                          {"bounces", args.transfer.bounces},
+                          {"from_cache", result->from_cache},
+                          {"cache_file", result->file.string()},
+                          {"bytes", t.bytes()}};
     if (!result->from_cache) out.update({{"rays", t.rays}, {"seconds", t.seconds}});
     std::printf("%s\n", out.dump(2).c_str());
   } else if (!quiet()) {
-    std::printf("prt: %zu surfaces, %zu vertices, %zu triangles (spacing %.3g m), order %d, %d directions, %d bounces\n",
-                receivers->surfaces.size(), vertices, triangles, double(args.spacing_m), t.order, args.transfer.directions,
-                args.transfer.bounces);
+    std::printf(
+        "prt: %zu surfaces, %zu vertices, %zu triangles (spacing %.3g m), order %d, %d directions, %d bounces\n",
+        receivers->surfaces.size(), vertices, triangles, double(args.spacing_m), t.order, args.transfer.directions,
+        args.transfer.bounces);
     if (result->from_cache)
       std::printf("read %s (%.2f MiB)\n", result->file.c_str(), double(t.bytes()) / 1048576.0);
     else
@@ -104,15 +110,20 @@ void add_prt_command(CLI::App& app, CommandRunner& runner) {
   auto args = std::make_shared<PrtArgs>();
   CLI::App* command = app.add_subcommand("prt", "Precompute PRT transfer of the scene's static meshes (cached)");
   add_scene_options(*command, args->scene, false);
-  command->add_option("--cache", args->cache, "Cache folder (default: prt-cache/ next to the scene, else the user cache)");
+  command->add_option("--cache", args->cache,
+                      "Cache folder (default: prt-cache/ next to the scene, else the user cache)");
   command->add_option("--spacing", args->spacing_m, "Largest edge of the subdivided receivers, m (default 0.1)")
       ->check(CLI::Range(0.005f, 10.0f));
-  command->add_option("--ground-margin", args->ground_margin_m, "Ground patch margin around the static meshes, m (default 2)")
+  command
+      ->add_option("--ground-margin", args->ground_margin_m,
+                   "Ground patch margin around the static meshes, m (default 2)")
       ->check(CLI::Range(0.0f, 100.0f));
   command->add_option("--directions", args->transfer.directions, "Directions per vertex and pass (default 1024)")
       ->check(CLI::Range(prt::kMinDirections, prt::kMaxDirections));
-  command->add_option("--bounces", args->transfer.bounces, "Interreflection passes (default 2)")->check(CLI::Range(0, prt::kMaxBounces));
-  command->add_option("--order", args->order, "SH order (default: the scene's render.sh_order)")->check(CLI::Range(settings::kMinShOrder, settings::kMaxShOrder));
+  command->add_option("--bounces", args->transfer.bounces, "Interreflection passes (default 2)")
+      ->check(CLI::Range(0, prt::kMaxBounces));
+  command->add_option("--order", args->order, "SH order (default: the scene's render.sh_order)")
+      ->check(CLI::Range(settings::kMinShOrder, settings::kMaxShOrder));
   command->add_option("--threads", args->threads, "Worker threads (default: all)")->check(CLI::Range(0, 1024));
   command->add_flag("--json", args->json, "Print the summary as JSON on stdout");
   add_quiet_flag(*command);

@@ -9,17 +9,16 @@
 //          κ_p = ((H − T) · O_p) / ((H − T) · 1) ∈ [0, 1]     (1 where nothing static blocks)
 // M_L X is the order-n truncated product L ∗ X (sh/product.h), as the frame's LH(N).
 #include <array>
-#include <span>
-
 #include <glm/glm.hpp>
+#include <span>
 
 namespace proxygi::prt {
 
 enum class StaticTransferLevel { l0, ratio, l1 };
 
 struct StaticReceiverSh {
-  std::span<const float> clamped_cosine;               // H(N)
-  std::span<const float> shadowed;                     // T_DS
+  std::span<const float> clamped_cosine;                 // H(N)
+  std::span<const float> shadowed;                       // T_DS
   std::array<std::span<const float>, 3> interreflected;  // T_DI per channel
 };
 

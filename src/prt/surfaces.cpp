@@ -88,7 +88,8 @@ StaticSurface ground_patch(glm::vec2 patch_min, glm::vec2 patch_max, float spaci
   const auto id = [&](int x, int z) { return std::uint32_t(z * (nx + 1) + x); };
   for (int z = 0; z < nz; ++z)
     for (int x = 0; x < nx; ++x)  // counter-clockwise seen from +Y
-      out.indices.insert(out.indices.end(), {id(x, z), id(x, z + 1), id(x + 1, z), id(x + 1, z), id(x, z + 1), id(x + 1, z + 1)});
+      out.indices.insert(out.indices.end(),
+                         {id(x, z), id(x, z + 1), id(x + 1, z), id(x + 1, z), id(x, z + 1), id(x + 1, z + 1)});
   return out;
 }
 

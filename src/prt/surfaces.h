@@ -12,10 +12,9 @@
 // `ground_margin_m`); beyond it the ground is treated as unoccluded (T = H(+Y)), because nothing
 // static stands there. Conventions: world space (glTF: +Y up, meters), unit vertex normals.
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <string>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "base/result.h"
 #include "world/world.h"
@@ -23,17 +22,17 @@
 namespace proxygi::prt {
 
 struct StaticSurface {
-  std::string name;                     // "static_meshes[i]:<primitive>" or "ground"
-  std::vector<glm::vec3> positions;     // world space, m
-  std::vector<glm::vec3> normals;       // unit, one per position
-  std::vector<std::uint32_t> indices;   // 3 per triangle
-  glm::vec3 albedo{0.8f};               // linear rgb in [0, 1] (one per surface: the material's factor)
+  std::string name;                    // "static_meshes[i]:<primitive>" or "ground"
+  std::vector<glm::vec3> positions;    // world space, m
+  std::vector<glm::vec3> normals;      // unit, one per position
+  std::vector<std::uint32_t> indices;  // 3 per triangle
+  glm::vec3 albedo{0.8f};              // linear rgb in [0, 1] (one per surface: the material's factor)
 };
 
 // The ground outside the meshed patch: y = 0, |x|, |z| <= half_size, minus the patch rectangle.
 struct OuterGround {
   bool enabled = false;
-  float half_size = 0.0f;                // m
+  float half_size = 0.0f;                      // m
   glm::vec2 patch_min{0.0f}, patch_max{0.0f};  // xz of the meshed patch (excluded)
   glm::vec3 albedo{0.8f};
 };

@@ -31,12 +31,12 @@ class RayScene {
     rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
     for (const StaticSurface& surface : receivers.surfaces) {
       RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-      auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                                   3 * sizeof(float), surface.positions.size()));
+      auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+          geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), surface.positions.size()));
       for (std::size_t i = 0; i < surface.positions.size(); ++i)
         for (int c = 0; c < 3; ++c) vertices[3 * i + std::size_t(c)] = surface.positions[i][c];
-      auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                                     3 * sizeof(unsigned), surface.indices.size() / 3));
+      auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+          geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), surface.indices.size() / 3));
       std::copy(surface.indices.begin(), surface.indices.end(), indices);
       rtcCommitGeometry(geometry);
       rtcAttachGeometry(scene_, geometry);
@@ -80,7 +80,8 @@ class RayScene {
       t = ray.ray.tfar;
       const StaticSurface& s = receivers_.surfaces[hit.surface_index];
       const std::uint32_t* tri = &s.indices[3 * std::size_t(hit.triangle)];
-      const glm::vec3 n = (1.0f - hit.u - hit.v) * s.normals[tri[0]] + hit.u * s.normals[tri[1]] + hit.v * s.normals[tri[2]];
+      const glm::vec3 n =
+          (1.0f - hit.u - hit.v) * s.normals[tri[0]] + hit.u * s.normals[tri[1]] + hit.v * s.normals[tri[2]];
       hit.front = glm::dot(n, dir) < 0.0f;
     }
     const float t_ground = outer_ground_distance(origin, dir);
@@ -120,7 +121,11 @@ class RayScene {
 };
 
 std::uint32_t hash32(std::uint32_t x) {  // lowbias32
-  x ^= x >> 16; x *= 0x7feb352dU; x ^= x >> 15; x *= 0x846ca68bU; x ^= x >> 16;
+  x ^= x >> 16;
+  x *= 0x7feb352dU;
+  x ^= x >> 15;
+  x *= 0x846ca68bU;
+  x ^= x >> 16;
   return x;
 }
 
@@ -154,7 +159,9 @@ glm::vec3 direction(const Frame& f, std::uint32_t k, std::uint32_t count, glm::v
   return glm::normalize(r * std::cos(phi) * f.t + r * std::sin(phi) * f.b + z * f.n);
 }
 
-float origin_offset(const glm::vec3& p) { return 1e-4f * std::max(1.0f, std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)})); }
+float origin_offset(const glm::vec3& p) {
+  return 1e-4f * std::max(1.0f, std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}));
+}
 
 // Ray origins per vertex: p moved 1 mm (at most a tenth of the way) toward its one-ring's
 // centroid in the tangent plane, then off the surface along N. A vertex on a seam (a floor vertex
@@ -166,7 +173,8 @@ std::vector<std::vector<glm::vec3>> ray_origins(const StaticReceivers& receivers
     std::vector<glm::vec3> sum(s.positions.size(), glm::vec3(0.0f));  // Σ adjacent triangle centroids
     std::vector<int> count(s.positions.size(), 0);
     for (std::size_t t = 0; t < s.indices.size(); t += 3) {
-      const glm::vec3 c = (s.positions[s.indices[t]] + s.positions[s.indices[t + 1]] + s.positions[s.indices[t + 2]]) / 3.0f;
+      const glm::vec3 c =
+          (s.positions[s.indices[t]] + s.positions[s.indices[t + 1]] + s.positions[s.indices[t + 2]]) / 3.0f;
       for (int k = 0; k < 3; ++k) {
         sum[s.indices[t + std::size_t(k)]] += c;
         ++count[s.indices[t + std::size_t(k)]];
@@ -222,24 +230,27 @@ void for_each_vertex(const StaticReceivers& receivers, int threads, std::string_
 
 Status validate(const StaticReceivers& receivers, const TransferSettings& settings) {
   if (settings.order < settings::kMinShOrder || settings.order > settings::kMaxShOrder)
-    return make_error("prt.order " + std::to_string(settings.order) + ": must be in " + std::to_string(settings::kMinShOrder) +
-                      ".." + std::to_string(settings::kMaxShOrder));
+    return make_error("prt.order " + std::to_string(settings.order) + ": must be in " +
+                      std::to_string(settings::kMinShOrder) + ".." + std::to_string(settings::kMaxShOrder));
   if (settings.directions < kMinDirections || settings.directions > kMaxDirections)
     return make_error("prt.directions " + std::to_string(settings.directions) + ": must be in " +
                       std::to_string(kMinDirections) + ".." + std::to_string(kMaxDirections));
   if (settings.bounces < 0 || settings.bounces > kMaxBounces)
-    return make_error("prt.bounces " + std::to_string(settings.bounces) + ": must be in 0.." + std::to_string(kMaxBounces));
+    return make_error("prt.bounces " + std::to_string(settings.bounces) + ": must be in 0.." +
+                      std::to_string(kMaxBounces));
   for (const StaticSurface& s : receivers.surfaces) {
     if (s.normals.size() != s.positions.size())
-      return make_error(s.name + ": " + std::to_string(s.normals.size()) + " normals for " + std::to_string(s.positions.size()) +
-                        " positions");
-    if (s.indices.size() % 3 != 0) return make_error(s.name + ": index count " + std::to_string(s.indices.size()) + " not a multiple of 3");
+      return make_error(s.name + ": " + std::to_string(s.normals.size()) + " normals for " +
+                        std::to_string(s.positions.size()) + " positions");
+    if (s.indices.size() % 3 != 0)
+      return make_error(s.name + ": index count " + std::to_string(s.indices.size()) + " not a multiple of 3");
     for (std::size_t i = 0; i < s.indices.size(); ++i)
       if (s.indices[i] >= s.positions.size())
-        return make_error(s.name + ": index " + std::to_string(i) + " = " + std::to_string(s.indices[i]) + " out of range (" +
-                          std::to_string(s.positions.size()) + " vertices)");
+        return make_error(s.name + ": index " + std::to_string(i) + " = " + std::to_string(s.indices[i]) +
+                          " out of range (" + std::to_string(s.positions.size()) + " vertices)");
     for (std::size_t i = 0; i < s.positions.size(); ++i)
-      if (!(std::isfinite(s.positions[i].x) && std::isfinite(s.positions[i].y) && std::isfinite(s.positions[i].z)) || !(std::abs(glm::length(s.normals[i]) - 1.0f) < 1e-3f))
+      if (!(std::isfinite(s.positions[i].x) && std::isfinite(s.positions[i].y) && std::isfinite(s.positions[i].z)) ||
+          !(std::abs(glm::length(s.normals[i]) - 1.0f) < 1e-3f))
         return make_error(s.name + ": vertex " + std::to_string(i) + ": non-finite position or non-unit normal");
   }
   return {};
@@ -307,8 +318,7 @@ Result<TransferSet> compute_transfer(const StaticReceivers& receivers, const Tra
     std::vector<float>& rgb = out.surfaces[s].interreflected;
     previous[s].resize(rgb.size());
     for (std::size_t v = 0; v < receivers.surfaces[s].positions.size(); ++v)
-      for (int c = 0; c < 3; ++c)
-        std::copy_n(&t[v * nn], nn, &previous[s][(3 * v + std::size_t(c)) * nn]);
+      for (int c = 0; c < 3; ++c) std::copy_n(&t[v * nn], nn, &previous[s][(3 * v + std::size_t(c)) * nn]);
     rgb = previous[s];
     current[s].assign(rgb.size(), 0.0f);
   }

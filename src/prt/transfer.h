@@ -32,9 +32,9 @@ inline constexpr int kMaxDirections = 65536;
 inline constexpr int kMaxBounces = 8;
 
 struct TransferSettings {
-  int order = 4;            // settings::kMinShOrder..kMaxShOrder (the proxy method's range)
-  int directions = 1024;    // K per vertex and pass, kMinDirections..kMaxDirections
-  int bounces = 2;          // interreflection passes after the shadow pass, 0..kMaxBounces
+  int order = 4;          // settings::kMinShOrder..kMaxShOrder (the proxy method's range)
+  int directions = 1024;  // K per vertex and pass, kMinDirections..kMaxDirections
+  int bounces = 2;        // interreflection passes after the shadow pass, 0..kMaxBounces
   std::uint32_t seed = 1;
   bool operator==(const TransferSettings&) const = default;
 };

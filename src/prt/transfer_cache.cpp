@@ -21,7 +21,9 @@ struct Fnv {
     for (std::size_t i = 0; i < size; ++i) h = (h ^ p[i]) * 1099511628211ull;
   }
   template <class T>
-  void value(const T& v) { bytes(&v, sizeof(v)); }
+  void value(const T& v) {
+    bytes(&v, sizeof(v));
+  }
   template <class T>
   void vector(const std::vector<T>& v) {
     value(std::uint64_t(v.size()));
@@ -32,7 +34,9 @@ struct Fnv {
 class Writer {
  public:
   template <class T>
-  void value(const T& v) { append(&v, sizeof(v)); }
+  void value(const T& v) {
+    append(&v, sizeof(v));
+  }
   void append(const void* data, std::size_t size) {
     const auto* p = static_cast<const std::uint8_t*>(data);
     bytes.insert(bytes.end(), p, p + size);
@@ -50,7 +54,9 @@ class Reader {
     return true;
   }
   template <class T>
-  bool value(T& v) { return read(&v, sizeof(v)); }
+  bool value(T& v) {
+    return read(&v, sizeof(v));
+  }
   std::size_t position() const { return pos_; }
 
  private:
@@ -107,7 +113,8 @@ Status write_transfer_file(const std::filesystem::path& file, std::uint64_t key,
   return write_file_atomically(file, std::span<const std::uint8_t>(w.bytes));
 }
 
-Result<TransferSet> read_transfer_file(const std::filesystem::path& file, std::uint64_t key, const StaticReceivers& receivers) {
+Result<TransferSet> read_transfer_file(const std::filesystem::path& file, std::uint64_t key,
+                                       const StaticReceivers& receivers) {
   auto bytes = read_file(file, kMaxFileBytes);
   if (!bytes) return bytes.error();
   const std::string where = file.string() + ": ";
@@ -122,11 +129,13 @@ Result<TransferSet> read_transfer_file(const std::filesystem::path& file, std::u
   std::uint64_t stored_key = 0;
   std::int32_t order = 0;
   std::uint32_t surfaces = 0;
-  if (!r.read(magic, 8) || std::memcmp(magic, kMagic, 8) != 0) return make_error(where + "not a proxygi PRT cache (bad magic)");
+  if (!r.read(magic, 8) || std::memcmp(magic, kMagic, 8) != 0)
+    return make_error(where + "not a proxygi PRT cache (bad magic)");
   if (!r.value(stored_key) || stored_key != key) return make_error(where + "key mismatch");
   if (!r.value(order) || order < 1 || order > 8) return make_error(where + "bad SH order");
   if (!r.value(surfaces) || surfaces != receivers.surfaces.size())
-    return make_error(where + "surface count " + std::to_string(surfaces) + ", expected " + std::to_string(receivers.surfaces.size()));
+    return make_error(where + "surface count " + std::to_string(surfaces) + ", expected " +
+                      std::to_string(receivers.surfaces.size()));
   TransferSet out;
   out.order = order;
   out.surfaces.resize(surfaces);
@@ -147,7 +156,8 @@ Result<TransferSet> read_transfer_file(const std::filesystem::path& file, std::u
 }
 
 Result<CachedTransfer> load_or_compute_transfer(const StaticReceivers& receivers, const TransferSettings& settings,
-                                                const std::filesystem::path& dir, const Progress& progress, int threads) {
+                                                const std::filesystem::path& dir, const Progress& progress,
+                                                int threads) {
   const std::uint64_t key = transfer_key(receivers, settings);
   CachedTransfer out;
   out.file = transfer_cache_file(dir, key);

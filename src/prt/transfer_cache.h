@@ -31,7 +31,8 @@ Result<CachedTransfer> load_or_compute_transfer(const StaticReceivers& receivers
                                                 int threads = 0);
 
 // The file's transfer when it is intact and matches (key, vertex counts); else an error naming why.
-Result<TransferSet> read_transfer_file(const std::filesystem::path& file, std::uint64_t key, const StaticReceivers& receivers);
+Result<TransferSet> read_transfer_file(const std::filesystem::path& file, std::uint64_t key,
+                                       const StaticReceivers& receivers);
 Status write_transfer_file(const std::filesystem::path& file, std::uint64_t key, const TransferSet& transfer);
 
 }  // namespace proxygi::prt

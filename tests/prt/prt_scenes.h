@@ -12,7 +12,8 @@
 namespace proxygi::prt::test {
 
 // The quad origin + a·u + b·v, a, b in [0, 1], facing normalize(cross(u, v)).
-inline StaticSurface quad(const char* name, glm::vec3 origin, glm::vec3 u, glm::vec3 v, glm::vec3 albedo, float spacing) {
+inline StaticSurface quad(const char* name, glm::vec3 origin, glm::vec3 u, glm::vec3 v, glm::vec3 albedo,
+                          float spacing) {
   const glm::vec3 n = glm::normalize(glm::cross(u, v));
   StaticSurface s{name, {origin, origin + u, origin + u + v, origin + v}, {n, n, n, n}, {0, 1, 2, 0, 2, 3}, albedo};
   return subdivide(s, spacing);

@@ -1,11 +1,12 @@
 // How static receivers combine PRT with the proxies (prt/static_shading.h): identities, and the
 // derived L1 level (notes/prt-vsgl.md §2, [DER]) against the path tracer under band-limited light.
-#include <cmath>
-#include <cstdio>
+#include "prt/static_shading.h"
 
 #include <gtest/gtest.h>
 
-#include "prt/static_shading.h"
+#include <cmath>
+#include <cstdio>
+
 #include "prt/transfer.h"
 #include "prt_scenes.h"
 #include "ref/path_tracer.h"
@@ -74,8 +75,8 @@ TEST(PrtStaticShading, L1AgreesWithThePathTracerAtTheCorner) {
   auto set = compute_transfer(r, {.order = kOrder, .directions = 2048, .bounces = 5});
   ASSERT_TRUE(set.ok()) << set.message();
   const sh::RgbSh light_sh = test::test_lighting(kOrder);
-  const std::array<std::vector<float>, 3> l = {test::to_float(light_sh.channels[0]), test::to_float(light_sh.channels[1]),
-                                               test::to_float(light_sh.channels[2])};
+  const std::array<std::vector<float>, 3> l = {
+      test::to_float(light_sh.channels[0]), test::to_float(light_sh.channels[1]), test::to_float(light_sh.channels[2])};
   const std::array<std::span<const float>, 3> lights = {l[0], l[1], l[2]};
   const ref::EnvironmentLight light = ref::EnvironmentLight::spherical_harmonics(light_sh);
   const ref::SphereShape sphere{{-0.45f, 0.35f, -0.45f}, 0.3f, ref::SurfaceMaterial{glm::vec3(0.0f), nullptr}};
@@ -83,13 +84,17 @@ TEST(PrtStaticShading, L1AgreesWithThePathTracerAtTheCorner) {
   auto proxy_scene = ref::EmbreeScene::build(test::tracer_meshes(r), std::span(&sphere, 1));
   ASSERT_TRUE(open_scene.ok() && proxy_scene.ok());
   const ref::PathTracerSettings pt_settings{.transport = ref::LightTransport::multi_bounce};
-  const ref::PathTracer open_tracer(*open_scene, light, light, pt_settings), proxy_tracer(*proxy_scene, light, light, pt_settings);
+  const ref::PathTracer open_tracer(*open_scene, light, light, pt_settings),
+      proxy_tracer(*proxy_scene, light, light, pt_settings);
   const sh::SphereQuadrature quadrature = sh::make_sphere_quadrature(96, 192);
 
-  struct Point { std::size_t surface; glm::vec3 p; };
-  const Point points[] = {{0, {-0.8f, 0, -0.8f}}, {0, {-0.6f, 0, -0.2f}}, {0, {-0.2f, 0, -0.6f}}, {0, {0.0f, 0, 0.0f}},
-                          {0, {-0.4f, 0, 0.2f}},  {0, {0.4f, 0, -0.8f}},  {0, {1.0f, 0, 1.0f}},  {1, {-1.0f, 0.4f, -0.2f}},
-                          {2, {-0.2f, 0.6f, -1.0f}}};
+  struct Point {
+    std::size_t surface;
+    glm::vec3 p;
+  };
+  const Point points[] = {{0, {-0.8f, 0, -0.8f}}, {0, {-0.6f, 0, -0.2f}},    {0, {-0.2f, 0, -0.6f}},
+                          {0, {0.0f, 0, 0.0f}},   {0, {-0.4f, 0, 0.2f}},     {0, {0.4f, 0, -0.8f}},
+                          {0, {1.0f, 0, 1.0f}},   {1, {-1.0f, 0.4f, -0.2f}}, {2, {-0.2f, 0.6f, -1.0f}}};
   const int samples = 8192;
   double err_open = 0, err[3] = {0, 0, 0}, err_max_l1 = 0;
   int index = 0;
@@ -120,7 +125,8 @@ TEST(PrtStaticShading, L1AgreesWithThePathTracerAtTheCorner) {
     }
     const glm::vec3 e_pt_open = glm::vec3(sum_open / double(samples)) * kPiF / s.albedo;
     const glm::vec3 e_pt = glm::vec3(sum_proxy / double(samples)) * kPiF / s.albedo;
-    const glm::vec3 e_prt_open = shade_static_receiver(kOrder, StaticTransferLevel::l1, rc.view(), lights, unoccluded());
+    const glm::vec3 e_prt_open =
+        shade_static_receiver(kOrder, StaticTransferLevel::l1, rc.view(), lights, unoccluded());
     const glm::vec3 e_levels[3] = {shade_static_receiver(kOrder, StaticTransferLevel::l0, rc.view(), lights, o),
                                    shade_static_receiver(kOrder, StaticTransferLevel::ratio, rc.view(), lights, o),
                                    shade_static_receiver(kOrder, StaticTransferLevel::l1, rc.view(), lights, o)};
@@ -140,9 +146,12 @@ TEST(PrtStaticShading, L1AgreesWithThePathTracerAtTheCorner) {
       err[level] += rel[level] / double(std::size(points));
     }
     err_max_l1 = std::max(err_max_l1, rel[2]);
-    std::printf("point %d (%s %.1f %.1f %.1f): open pt %.4f ± %.2f%% prt %.4f (%.2f%%) | proxy pt %.4f l0 %.4f ratio %.4f l1 %.4f kappa %.3f\n",
-                index, s.name.c_str(), x.x, x.y, x.z, lum(e_pt_open), 100 * std_error, lum(e_prt_open), 100 * rel_open, lum(e_pt),
-                lum(e_levels[0]), lum(e_levels[1]), lum(e_levels[2]), unblocked_proxy_fraction(kOrder, rc.h, rc.t, o));
+    std::printf(
+        "point %d (%s %.1f %.1f %.1f): open pt %.4f ± %.2f%% prt %.4f (%.2f%%) | proxy pt %.4f l0 %.4f ratio %.4f l1 "
+        "%.4f kappa %.3f\n",
+        index, s.name.c_str(), x.x, x.y, x.z, lum(e_pt_open), 100 * std_error, lum(e_prt_open), 100 * rel_open,
+        lum(e_pt), lum(e_levels[0]), lum(e_levels[1]), lum(e_levels[2]),
+        unblocked_proxy_fraction(kOrder, rc.h, rc.t, o));
     ++index;
   }
   std::printf("max open error %.2f%%; mean error l0 %.2f%% ratio %.2f%% l1 %.2f%%; max l1 %.2f%%\n", 100 * err_open,

@@ -1,9 +1,10 @@
 // Static receivers from a scene (prt/surfaces.h) and the outer ground of the precompute.
-#include <cmath>
+#include "prt/surfaces.h"
 
 #include <gtest/gtest.h>
 
-#include "prt/surfaces.h"
+#include <cmath>
+
 #include "prt/transfer.h"
 #include "prt_scenes.h"
 #include "scene/scene_parse.h"
@@ -14,7 +15,8 @@ namespace {
 TEST(PrtSurfaces, WallCornerSceneGivesItsBoxesAndAGroundPatch) {
   auto scene = scene::load_scene(std::filesystem::path(PROXYGI_SOURCE_DIR) / "assets/scenes/wall_corner.json");
   ASSERT_TRUE(scene.ok()) << scene.message();
-  auto world = world::World::load(*scene, {.assets_dir = std::filesystem::path(PROXYGI_SOURCE_DIR) / "assets", .load_rigs = false});
+  auto world = world::World::load(
+      *scene, {.assets_dir = std::filesystem::path(PROXYGI_SOURCE_DIR) / "assets", .load_rigs = false});
   ASSERT_TRUE(world.ok()) << world.message();
   auto r = static_receivers(**world, 0.1f, 2.0f);
   ASSERT_TRUE(r.ok()) << r.message();
@@ -31,7 +33,8 @@ TEST(PrtSurfaces, WallCornerSceneGivesItsBoxesAndAGroundPatch) {
     const float limit = (s.name == "ground" ? std::sqrt(2.0f) : 1.0f) * 0.1f + 1e-5f;
     for (std::size_t t = 0; t < s.indices.size(); t += 3)
       for (int e = 0; e < 3; ++e)
-        ASSERT_LE(glm::length(s.positions[s.indices[t + std::size_t(e)]] - s.positions[s.indices[t + std::size_t((e + 1) % 3)]]),
+        ASSERT_LE(glm::length(s.positions[s.indices[t + std::size_t(e)]] -
+                              s.positions[s.indices[t + std::size_t((e + 1) % 3)]]),
                   limit)
             << s.name << " triangle " << t / 3;
   }

@@ -1,10 +1,11 @@
 // The PRT cache: a second load reads the file; a corrupt file or changed settings recompute.
-#include <filesystem>
-#include <fstream>
+#include "prt/transfer_cache.h"
 
 #include <gtest/gtest.h>
 
-#include "prt/transfer_cache.h"
+#include <filesystem>
+#include <fstream>
+
 #include "prt_scenes.h"
 
 namespace proxygi::prt {

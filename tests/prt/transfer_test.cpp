@@ -1,9 +1,10 @@
 // PRT precompute: analytic cases (notes/prt-vsgl.md §2 tests) and determinism.
-#include <cmath>
+#include "prt/transfer.h"
 
 #include <gtest/gtest.h>
 
-#include "prt/transfer.h"
+#include <cmath>
+
 #include "prt_scenes.h"
 #include "ref/sampling.h"
 #include "sh/convolution.h"
@@ -146,11 +147,12 @@ TEST(PrtTransfer, ProgressReachesEveryVertexInEachPass) {
   const StaticReceivers r = wall_corner(0.5f);
   std::size_t total = 0, last_done = 0;
   std::vector<std::string> stages;
-  auto t = compute_transfer(r, {.order = 3, .directions = 16, .bounces = 1}, [&](std::string_view stage, std::size_t done, std::size_t n) {
-    if (stages.empty() || stages.back() != stage) stages.emplace_back(stage);
-    last_done = done;
-    total = n;
-  });
+  auto t = compute_transfer(r, {.order = 3, .directions = 16, .bounces = 1},
+                            [&](std::string_view stage, std::size_t done, std::size_t n) {
+                              if (stages.empty() || stages.back() != stage) stages.emplace_back(stage);
+                              last_done = done;
+                              total = n;
+                            });
   ASSERT_TRUE(t.ok());
   EXPECT_EQ(stages, (std::vector<std::string>{"shadow", "bounce 1"}));
   EXPECT_EQ(last_done, total);
@@ -164,7 +166,8 @@ TEST(PrtTransfer, BadInputIsNamed) {
   r.surfaces[1].indices[4] = 100000;
   auto bad_index = compute_transfer(r, {});
   ASSERT_FALSE(bad_index.ok());
-  EXPECT_NE(bad_index.message().find("wall x: index 4 = 100000 out of range"), std::string::npos) << bad_index.message();
+  EXPECT_NE(bad_index.message().find("wall x: index 4 = 100000 out of range"), std::string::npos)
+      << bad_index.message();
 }
 
 TEST(PrtSurfaces, SubdivisionKeepsAreaAndMeetsTheSpacing) {

@@ -1,10 +1,10 @@
 // What PRT gains on the project's wall corner (assets/scenes/wall_corner.json), static receivers
 // only: today's L0 (H(N) · L, the ground-lit L' above the ground, render/frame_tables.cpp) and PRT
 // (T_DI · L) against the multi-bounce path tracer under the scene's windowed order-4 sky.
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <cstdio>
-
-#include <gtest/gtest.h>
 
 #include "prt/transfer.h"
 #include "prt_scenes.h"
@@ -41,7 +41,8 @@ TEST(PrtWallCorner, PrtFixesTheCornerThatL0Misses) {
   for (std::size_t c = 0; c < 3; ++c) {
     sky.channels[c].resize(kN);
     if (scene->render.sh_window) sh::apply_ringing_window(kOrder, sky.channels[c]);
-    const double radiance = std::max(0.0, sh::ground_irradiance(kOrder, sky.channels[c])) * scene->ground.albedo[int(c)] / sh::kPi;
+    const double radiance =
+        std::max(0.0, sh::ground_irradiance(kOrder, sky.channels[c])) * scene->ground.albedo[int(c)] / sh::kPi;
     ground_lit.channels[c] = sh::replace_below_horizon(kOrder, sky.channels[c], radiance);
   }
 
@@ -49,8 +50,10 @@ TEST(PrtWallCorner, PrtFixesTheCornerThatL0Misses) {
   std::vector<ref::TriangleMesh> meshes = test::tracer_meshes(*receivers);
   const OuterGround& g = receivers->outer_ground;
   const float h = g.half_size;
-  const glm::vec4 rects[] = {{-h, -h, h, g.patch_min.y}, {-h, g.patch_max.y, h, h},
-                             {-h, g.patch_min.y, g.patch_min.x, g.patch_max.y}, {g.patch_max.x, g.patch_min.y, h, g.patch_max.y}};
+  const glm::vec4 rects[] = {{-h, -h, h, g.patch_min.y},
+                             {-h, g.patch_max.y, h, h},
+                             {-h, g.patch_min.y, g.patch_min.x, g.patch_max.y},
+                             {g.patch_max.x, g.patch_min.y, h, g.patch_max.y}};
   for (const glm::vec4& rect : rects) {
     ref::TriangleMesh m;
     m.name = "outer ground";
@@ -65,7 +68,10 @@ TEST(PrtWallCorner, PrtFixesTheCornerThatL0Misses) {
   const ref::EnvironmentLight light = ref::EnvironmentLight::spherical_harmonics(sky);
   const ref::PathTracer tracer(*tracer_scene, light, light, {.transport = ref::LightTransport::multi_bounce});
 
-  struct Probe { const char* where; glm::vec3 p, n; };
+  struct Probe {
+    const char* where;
+    glm::vec3 p, n;
+  };
   const Probe probes[] = {{"floor in the corner", {-0.9f, 0, -0.9f}, {0, 1, 0}},
                           {"floor at the stairs' foot", {0.3f, 0, -0.5f}, {0, 1, 0}},
                           {"wall x low", {-1.0f, 0.2f, 0.5f}, {1, 0, 0}},
@@ -93,7 +99,8 @@ TEST(PrtWallCorner, PrtFixesTheCornerThatL0Misses) {
     for (std::size_t c = 0; c < 3; ++c)
       for (std::size_t i = 0; i < kN; ++i) {
         e_l0[int(c)] += float(hn[i] * l0_light.channels[c][i]);
-        e_prt[int(c)] += transfer->surfaces[best_s].interreflected[(3 * best_v + c) * kN + i] * float(sky.channels[c][i]);
+        e_prt[int(c)] +=
+            transfer->surfaces[best_s].interreflected[(3 * best_v + c) * kN + i] * float(sky.channels[c][i]);
       }
     ref::SurfaceHit hit;
     hit.position = x;
@@ -107,13 +114,15 @@ TEST(PrtWallCorner, PrtFixesTheCornerThatL0Misses) {
     }
     const glm::vec3 e_pt = glm::vec3(sum / double(samples)) * 3.14159265f / surface.albedo;
     const double rel_l0 = luminance(e_l0) / luminance(e_pt) - 1.0, rel_prt = luminance(e_prt) / luminance(e_pt) - 1.0;
-    std::printf("%-30s E_pt %.4f  L0 %+6.1f %%  PRT %+6.2f %%\n", probe.where, luminance(e_pt), 100 * rel_l0, 100 * rel_prt);
+    std::printf("%-30s E_pt %.4f  L0 %+6.1f %%  PRT %+6.2f %%\n", probe.where, luminance(e_pt), 100 * rel_l0,
+                100 * rel_prt);
     error_l0 += std::abs(rel_l0) / double(std::size(probes));
     error_prt += std::abs(rel_prt) / double(std::size(probes));
     worst_prt = std::max(worst_prt, std::abs(rel_prt));
     ++index;
   }
-  std::printf("mean |error|: L0 %.1f %%, PRT %.2f %% (worst %.2f %%)\n", 100 * error_l0, 100 * error_prt, 100 * worst_prt);
+  std::printf("mean |error|: L0 %.1f %%, PRT %.2f %% (worst %.2f %%)\n", 100 * error_l0, 100 * error_prt,
+              100 * worst_prt);
   // The gain: L0 has no static self-shadowing (the walls hide the sun from the corner), PRT has.
   // PRT's mean is held to the 5 % radiance goal; its worst probe (printed) carries the
   // 0.25 m spacing of this test (bounce light interpolated across the walls' sun-shadow edge).
