@@ -63,6 +63,7 @@ int run_prt(PrtArgs& args) {
     return kExitOk;
   }
   const std::filesystem::path dir = cache_dir(args, *scene);
+  if (!writable_folder(dir)) return fail_runtime(dir.string() + ": cannot create or write the PRT cache folder");
   const bool terminal = ::isatty(STDERR_FILENO) != 0;
   std::string last_stage;
   const prt::Progress progress = [&](std::string_view stage, std::size_t done, std::size_t total) {
