@@ -15,6 +15,9 @@
 // no light (closed or ground-standing meshes). The outer ground (beyond the meshed patch) has
 // T^0 = H(+Y) and no bounce light of its own.
 //
+// Rays leave a vertex 1 mm toward its one-ring's centroid (and 1e-4 m off the surface), so a
+// vertex on a seam (a floor vertex at a wall's foot, a corner) does not leak behind the other surface.
+//
 // Determinism: vertex v of surface s uses a Hammersley set Cranley–Patterson rotated by a hash
 // of (seed, s, v), so results do not depend on the thread count or on scheduling.
 #include <cstdint>
