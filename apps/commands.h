@@ -46,6 +46,7 @@ void add_record_command(CLI::App& app, CommandRunner& runner);   // cmd_record.c
 void add_reference_command(CLI::App& app, CommandRunner& runner);  // cmd_reference.cpp
 void add_regress_command(CLI::App& app, CommandRunner& runner);  // cmd_regress.cpp
 void add_view_command(CLI::App& app, CommandRunner& runner);     // cmd_view.cpp
+void add_prt_command(CLI::App& app, CommandRunner& runner);      // cmd_prt.cpp
 
 // `proxygi bench <study>` subcommands, one file each (apps/bench_<name>.cpp).
 void add_bench_sh_command(CLI::App& bench, CommandRunner& runner);     // bench_sh.cpp

@@ -91,6 +91,7 @@ int main(int argc, char** argv) {
   add_reference_command(app, runner);
   add_regress_command(app, runner);
   add_view_command(app, runner);
+  add_prt_command(app, runner);
 
   try {
     app.parse(argc, argv);

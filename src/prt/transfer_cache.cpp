@@ -1,0 +1,183 @@
+#include "prt/transfer_cache.h"
+
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <system_error>
+
+#include "base/atomic_file.h"
+#include "base/log.h"
+
+namespace proxygi::prt {
+namespace {
+
+constexpr char kMagic[8] = {'P', 'G', 'P', 'R', 'T', '0', '0', '1'};
+constexpr std::uint64_t kMaxFileBytes = std::uint64_t(8) << 30;
+
+struct Fnv {
+  std::uint64_t h = 1469598103934665603ull;
+  void bytes(const void* data, std::size_t size) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < size; ++i) h = (h ^ p[i]) * 1099511628211ull;
+  }
+  template <class T>
+  void value(const T& v) {
+    bytes(&v, sizeof(v));
+  }
+  template <class T>
+  void vector(const std::vector<T>& v) {
+    value(std::uint64_t(v.size()));
+    bytes(v.data(), v.size() * sizeof(T));
+  }
+};
+
+class Writer {
+ public:
+  template <class T>
+  void value(const T& v) {
+    append(&v, sizeof(v));
+  }
+  void append(const void* data, std::size_t size) {
+    const auto* p = static_cast<const std::uint8_t*>(data);
+    bytes.insert(bytes.end(), p, p + size);
+  }
+  std::vector<std::uint8_t> bytes;
+};
+
+class Reader {
+ public:
+  explicit Reader(const std::vector<std::uint8_t>& b) : bytes_(b) {}
+  bool read(void* out, std::size_t size) {
+    if (size > bytes_.size() - pos_) return false;
+    std::memcpy(out, bytes_.data() + pos_, size);
+    pos_ += size;
+    return true;
+  }
+  template <class T>
+  bool value(T& v) {
+    return read(&v, sizeof(v));
+  }
+  std::size_t position() const { return pos_; }
+
+ private:
+  const std::vector<std::uint8_t>& bytes_;
+  std::size_t pos_ = 0;
+};
+
+}  // namespace
+
+std::uint64_t transfer_key(const StaticReceivers& receivers, const TransferSettings& settings) {
+  Fnv fnv;
+  fnv.bytes(kMagic, sizeof(kMagic));
+  fnv.value(settings.order);
+  fnv.value(settings.directions);
+  fnv.value(settings.bounces);
+  fnv.value(settings.seed);
+  fnv.value(std::uint64_t(receivers.surfaces.size()));
+  for (const StaticSurface& s : receivers.surfaces) {
+    fnv.vector(s.positions);
+    fnv.vector(s.normals);
+    fnv.vector(s.indices);
+    fnv.value(s.albedo);
+  }
+  const OuterGround& g = receivers.outer_ground;
+  fnv.value(g.enabled);
+  fnv.value(g.half_size);
+  fnv.value(g.patch_min);
+  fnv.value(g.patch_max);
+  fnv.value(g.albedo);
+  return fnv.h;
+}
+
+std::filesystem::path transfer_cache_file(const std::filesystem::path& dir, std::uint64_t key) {
+  char name[32];
+  std::snprintf(name, sizeof(name), "prt-%016llx.bin", static_cast<unsigned long long>(key));
+  return dir / name;
+}
+
+Status write_transfer_file(const std::filesystem::path& file, std::uint64_t key, const TransferSet& transfer) {
+  Writer w;
+  w.append(kMagic, sizeof(kMagic));
+  w.value(key);
+  w.value(std::int32_t(transfer.order));
+  w.value(std::uint32_t(transfer.surfaces.size()));
+  const std::size_t nn = std::size_t(transfer.order * transfer.order);
+  for (const SurfaceTransfer& s : transfer.surfaces) w.value(std::uint32_t(s.shadowed.size() / nn));
+  for (const SurfaceTransfer& s : transfer.surfaces) {
+    w.append(s.shadowed.data(), s.shadowed.size() * sizeof(float));
+    w.append(s.interreflected.data(), s.interreflected.size() * sizeof(float));
+  }
+  Fnv fnv;
+  fnv.bytes(w.bytes.data(), w.bytes.size());
+  w.value(fnv.h);
+  return write_file_atomically(file, std::span<const std::uint8_t>(w.bytes));
+}
+
+Result<TransferSet> read_transfer_file(const std::filesystem::path& file, std::uint64_t key,
+                                       const StaticReceivers& receivers) {
+  auto bytes = read_file(file, kMaxFileBytes);
+  if (!bytes) return bytes.error();
+  const std::string where = file.string() + ": ";
+  if (bytes->size() < sizeof(kMagic) + 8) return make_error(where + "truncated");
+  Fnv fnv;
+  fnv.bytes(bytes->data(), bytes->size() - 8);
+  std::uint64_t stored_sum = 0;
+  std::memcpy(&stored_sum, bytes->data() + bytes->size() - 8, 8);
+  if (stored_sum != fnv.h) return make_error(where + "checksum mismatch (corrupt or truncated)");
+  Reader r(*bytes);
+  char magic[8];
+  std::uint64_t stored_key = 0;
+  std::int32_t order = 0;
+  std::uint32_t surfaces = 0;
+  if (!r.read(magic, 8) || std::memcmp(magic, kMagic, 8) != 0)
+    return make_error(where + "not a proxygi PRT cache (bad magic)");
+  if (!r.value(stored_key) || stored_key != key) return make_error(where + "key mismatch");
+  if (!r.value(order) || order < 1 || order > 8) return make_error(where + "bad SH order");
+  if (!r.value(surfaces) || surfaces != receivers.surfaces.size())
+    return make_error(where + "surface count " + std::to_string(surfaces) + ", expected " +
+                      std::to_string(receivers.surfaces.size()));
+  TransferSet out;
+  out.order = order;
+  out.surfaces.resize(surfaces);
+  const std::size_t nn = std::size_t(order * order);
+  std::vector<std::uint32_t> vertices(surfaces);
+  for (std::uint32_t s = 0; s < surfaces; ++s)
+    if (!r.value(vertices[s]) || vertices[s] != receivers.surfaces[s].positions.size())
+      return make_error(where + "surface " + std::to_string(s) + ": vertex count mismatch");
+  for (std::uint32_t s = 0; s < surfaces; ++s) {
+    out.surfaces[s].shadowed.resize(vertices[s] * nn);
+    out.surfaces[s].interreflected.resize(vertices[s] * 3 * nn);
+    if (!r.read(out.surfaces[s].shadowed.data(), out.surfaces[s].shadowed.size() * sizeof(float)) ||
+        !r.read(out.surfaces[s].interreflected.data(), out.surfaces[s].interreflected.size() * sizeof(float)))
+      return make_error(where + "surface " + std::to_string(s) + ": truncated");
+  }
+  if (r.position() != bytes->size() - 8) return make_error(where + "trailing bytes");
+  return out;
+}
+
+Result<CachedTransfer> load_or_compute_transfer(const StaticReceivers& receivers, const TransferSettings& settings,
+                                                const std::filesystem::path& dir, const Progress& progress,
+                                                int threads) {
+  const std::uint64_t key = transfer_key(receivers, settings);
+  CachedTransfer out;
+  out.file = transfer_cache_file(dir, key);
+  std::error_code ec;
+  if (std::filesystem::exists(out.file, ec)) {
+    auto cached = read_transfer_file(out.file, key, receivers);
+    if (cached) {
+      out.transfer = std::move(*cached);
+      out.from_cache = true;
+      return out;
+    }
+    log_warning(cached.message() + "; recomputing the PRT transfer");
+  }
+  auto computed = compute_transfer(receivers, settings, progress, threads);
+  if (!computed) return computed.error();
+  out.transfer = std::move(*computed);
+  std::filesystem::create_directories(dir, ec);
+  if (ec) return make_error(dir.string() + ": cannot create the PRT cache folder: " + ec.message());
+  if (Status written = write_transfer_file(out.file, key, out.transfer); !written) return written.error();
+  return out;
+}
+
+}  // namespace proxygi::prt
