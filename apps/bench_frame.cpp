@@ -34,6 +34,8 @@ struct BenchOptions {
   std::string device;
   std::string indirect_operator = "averaged";  // scene names (scene::names::kIndirectOperator)
   std::string indirect_method = "proxy";       // settings::kIndirectMethodNames
+  int vsgl_lights = 1;                         // render.vsgl_lights (indirect_method vsgl)
+  std::string vsgl_grouping = "vertex_ranges"; // settings::kVsglGroupingNames
   std::vector<std::string> only;               // empty: every row; else "default", "crowd", "baselines"
   bool runs(const std::string& part) const { return only.empty() || std::find(only.begin(), only.end(), part) != only.end(); }
 };
@@ -83,6 +85,9 @@ Result<ConfigResult> run_config(gpu::Context& context, const std::string& name,
   render.splat = splat;
   render.indirect_operator = indirect_operator(options.indirect_operator);
   render.indirect_method = indirect_method(options.indirect_method);
+  render.vsgl_lights = options.vsgl_lights;
+  for (const auto& [text, value] : settings::kVsglGroupingNames)
+    if (text == options.vsgl_grouping) render.vsgl_grouping = value;
   auto renderer = gpu::SceneRenderer::create(context, world, render, std::uint32_t(options.size),
                                              std::uint32_t(options.size));
   if (!renderer) return renderer.error();
@@ -174,6 +179,8 @@ int run_bench_frame(const BenchOptions& options) {
     out["frames"] = options.frames;
     out["indirect_operator"] = options.indirect_operator;
     out["indirect_method"] = options.indirect_method;
+    out["vsgl_lights"] = options.vsgl_lights;
+    out["vsgl_grouping"] = options.vsgl_grouping;
     out["peak_resident_mib"] = peak_mib;
     if (has_default) out["speedup_quarter_over_full"] = k1 / k4;
     for (const auto& result : results) {
@@ -198,9 +205,12 @@ int run_bench_frame(const BenchOptions& options) {
     std::printf("%s\n", out.dump(2).c_str());
     return kExitOk;
   }
-  std::printf("device: %s (%s), %dx%d, %d frames per setting, indirect %s (%s operator)\n", report.name.c_str(),
+  std::printf("device: %s (%s), %dx%d, %d frames per setting, indirect %s (%s operator)", report.name.c_str(),
               report.driver.c_str(), options.size, options.size, options.frames, options.indirect_method.c_str(),
               options.indirect_operator.c_str());
+  if (options.indirect_method == "vsgl")
+    std::printf(", %d lights per character by %s", options.vsgl_lights, options.vsgl_grouping.c_str());
+  std::printf("\n");
   std::printf("%-8s %-6s %-7s %3s %9s %5s %7s %9s %6s |", "scene", "method", "splat", "k", "receivers", "chars",
               "proxies", "frame ms", "fps");
   for (std::size_t p = 0; p < std::size_t(gpu::FramePass::count); ++p)
@@ -246,6 +256,11 @@ void add_bench_frame_command(CLI::App& bench, CommandRunner& runner) {
       ->check(CLI::IsMember({"point", "averaged", "exact"}));
   command->add_option("--indirect-method", options->indirect_method, "Bounce light of every setting (render.indirect_method)")
       ->check(CLI::IsMember({"proxy", "vsgl", "none"}));
+  command->add_option("--vsgl-lights", options->vsgl_lights, "vsgl: lights per character (render.vsgl_lights)")
+      ->check(CLI::IsMember(std::vector<int>(settings::kVsglLightsPerCharacter.begin(),
+                                             settings::kVsglLightsPerCharacter.end())));
+  command->add_option("--vsgl-grouping", options->vsgl_grouping, "vsgl: vertex_ranges or bone_groups (render.vsgl_grouping)")
+      ->check(CLI::IsMember({"vertex_ranges", "bone_groups"}));
   command->add_option("--only", options->only, "Rows to run (default: all): default, baselines, crowd")
       ->delimiter(',')
       ->check(CLI::IsMember({"default", "baselines", "crowd"}));

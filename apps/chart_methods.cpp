@@ -29,9 +29,13 @@ std::vector<MethodSetting> method_grid(bool quick) {
         for (settings::IndirectOperator indirect : operators)
           grid.push_back({settings::ShadingMethod::image_space, order, scale, upsampling, indirect});
       }
-  for (int lights : settings::kVsglLightsPerCharacter)
-    grid.push_back({settings::ShadingMethod::image_space, defaults.sh_order, defaults.receiver_scale, defaults.upsampling,
-                    defaults.indirect_operator, settings::IndirectMethod::vsgl, lights});
+  for (settings::VsglGrouping grouping : {settings::VsglGrouping::vertex_ranges, settings::VsglGrouping::bone_groups})
+    for (int lights : settings::kVsglLightsPerCharacter) {
+      if (lights == 1 && grouping == settings::VsglGrouping::bone_groups) continue;  // one light: no grouping
+      grid.push_back({settings::ShadingMethod::image_space, defaults.sh_order, defaults.receiver_scale,
+                      defaults.upsampling, defaults.indirect_operator, settings::IndirectMethod::vsgl, lights, true,
+                      grouping});
+    }
   grid.push_back({settings::ShadingMethod::image_space, defaults.sh_order, defaults.receiver_scale, defaults.upsampling,
                   defaults.indirect_operator, settings::IndirectMethod::none});
   // What the lit ground adds: the default setting with render.ground_bounce off.
@@ -56,11 +60,15 @@ study::ChartRow describe_setting(const MethodSetting& setting, const std::string
       row.sh_order = setting.sh_order;
       row.receiver_scale = setting.receiver_scale;
       if (setting.receiver_scale > 1) row.upsampling = std::string(settings::name_of(setting.upsampling));
-      // The bounce column: the proxy operator, "vsgl<K>" (K lights per character) or "none".
+      // The bounce column: the proxy operator, "vsgl<K>" (K lights per character; "vsgl<K>-bones"
+      // by bone group) or "none".
       row.indirect = setting.indirect_method == settings::IndirectMethod::proxy
                          ? std::string(settings::name_of(setting.indirect))
                          : std::string(settings::name_of(setting.indirect_method));
-      if (setting.indirect_method == settings::IndirectMethod::vsgl) row.indirect += std::to_string(setting.vsgl_lights);
+      if (setting.indirect_method == settings::IndirectMethod::vsgl) {
+        row.indirect += std::to_string(setting.vsgl_lights);
+        if (setting.vsgl_grouping == settings::VsglGrouping::bone_groups) row.indirect += "-bones";
+      }
       row.is_default = setting.sh_order == defaults.sh_order && setting.receiver_scale == defaults.receiver_scale &&
                        setting.upsampling == defaults.upsampling && setting.indirect == defaults.indirect_operator &&
                        setting.indirect_method == defaults.indirect_method && setting.ground_bounce == defaults.ground_bounce;
@@ -96,6 +104,7 @@ Status run_raster_methods(gpu::Context& context, const study::ChartScene& chart,
     render.ground_bounce = setting.ground_bounce;
     render.indirect_method = setting.indirect_method;
     render.vsgl_lights = setting.vsgl_lights;
+    render.vsgl_grouping = setting.vsgl_grouping;
     grid_settings.push_back(render);
   }
   auto renderer = gpu::SceneRenderer::create(context, std::shared_ptr<const world::World>(std::move(*world)),

@@ -23,15 +23,16 @@ struct MethodSetting {
   settings::IndirectMethod indirect_method = settings::IndirectMethod::proxy;  // vsgl, none: `indirect` unused
   int vsgl_lights = 1;  // vsgl: lights per character (render.vsgl_lights)
   bool ground_bounce = true;  // render.ground_bounce
+  settings::VsglGrouping vsgl_grouping = settings::VsglGrouping::vertex_ranges;  // vsgl: render.vsgl_grouping
 };
 
 // The grid: the proxy method at SH orders 3–6 × receivers 1/1, 1/2, 1/4, 1/8 × bilateral
 // or bilinear (1/1 has nothing to upsample: bilateral only) × indirect point, averaged, exact; the
 // vertex baseline at orders 3–6; AO at 1/1 .. 1/8 (bilateral); at the default order and k the
-// other bounce methods, indirect_method vsgl (K = 1, 2, 4, 8 lights per character) and none (no
-// bounce); and the default proxy setting without the ground bounce. `quick`: order 4, 1/4,
-// bilateral with the three operators, the four vsgl rows, none, no ground bounce, and each
-// baseline once.
+// other bounce methods, indirect_method vsgl (K = 1, 2, 4, 8 lights per character by index range,
+// K = 2, 4, 8 by bone group) and none (no bounce); and the default proxy setting without the
+// ground bounce. `quick`: order 4, 1/4, bilateral with the three operators, the seven vsgl rows,
+// none, no ground bounce, and each baseline once.
 std::vector<MethodSetting> method_grid(bool quick);
 
 // The chart row's identity of a setting (times and errors still zero).

@@ -27,6 +27,11 @@ struct DrawItem {
   // The VSGL light (render.indirect_method vsgl) this draw sends bounce light through: its
   // character's index (< gpu_layout::kVsglMaxLights); −1: not a sender (static meshes).
   int vsgl_light = -1;
+  // render.vsgl_grouping bone_groups: the draw's triangles in bone-group order (anim/bone_groups.h;
+  // 32-bit indices, storage usage) and the first triangle of each of its K lights then the end
+  // (K + 1 entries, K = render.vsgl_lights). Empty: the lights take K index ranges of `indices`.
+  const Buffer* vsgl_indices = nullptr;
+  std::span<const std::uint32_t> vsgl_group_first;
   std::uint32_t vertex_count() const { return positions ? std::uint32_t(positions->size() / sizeof(glm::vec4)) : 0; }
   bool textured() const { return texture.view != VK_NULL_HANDLE && texture.sampler != VK_NULL_HANDLE; }
 };

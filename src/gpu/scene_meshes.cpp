@@ -4,6 +4,7 @@
 #include <map>
 #include <tuple>
 
+#include "anim/bone_groups.h"
 #include "anim/posed_character.h"
 #include "anim/skinning.h"
 #include "base/log.h"
@@ -12,6 +13,30 @@
 #include "render/ground_grid.h"
 
 namespace proxygi::gpu {
+namespace {
+
+// The primitive's triangles in bone-group order for every K (render.vsgl_grouping bone_groups).
+template <class AllGroups>
+Result<std::shared_ptr<const VsglTriangleOrders>> upload_vsgl_orders(Context& context, const anim::Character& character,
+                                                                     int node, const anim::Primitive& primitive,
+                                                                     const AllGroups& groups) {
+  auto orders = std::make_shared<VsglTriangleOrders>();
+  std::vector<std::uint32_t> indices;
+  for (std::size_t k = 0; k < groups.size(); ++k) {
+    const std::vector<int> vertex_group = anim::primitive_vertex_groups(character, node, primitive, groups[k]);
+    const anim::GroupedTriangles grouped = anim::group_triangles(primitive.indices, vertex_group, groups[k].groups);
+    const std::uint32_t base = std::uint32_t(indices.size() / 3);
+    for (std::uint32_t first : grouped.first) orders->first[k].push_back(base + first);
+    indices.insert(indices.end(), grouped.indices.begin(), grouped.indices.end());
+  }
+  auto buffer = create_buffer_with_data(context, as_bytes(std::span<const std::uint32_t>(indices)),
+                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  if (!buffer) return buffer.error();
+  orders->indices = std::move(*buffer);
+  return std::shared_ptr<const VsglTriangleOrders>(std::move(orders));
+}
+
+}  // namespace
 
 Status SceneRenderer::upload_instances() {
   const std::uint32_t slots = std::uint32_t(slots_.size());
@@ -26,8 +51,11 @@ Status SceneRenderer::upload_instances() {
   // shared by its instances (the crowd's 20 mannequins hold one copy).
   struct Shared {
     std::shared_ptr<const Buffer> indices, uvs;
+    std::shared_ptr<const VsglTriangleOrders> vsgl_orders;
   };
   std::map<std::tuple<const world::Model*, std::size_t, std::size_t>, Shared> shared;
+  using AllGroups = std::array<anim::BoneGroups, settings::kVsglLightsPerCharacter.size()>;
+  std::map<const world::Model*, AllGroups> bone_groups;  // per model, for each K
   for (std::size_t index = 0; index < world_->instances().size(); ++index) {
     const world::CharacterInstance& source = world_->instances()[index];
     const MaterialTextures* textures = nullptr;
@@ -35,6 +63,11 @@ Status SceneRenderer::upload_instances() {
       if (model->model == source.model) textures = &model->textures;
     auto instance = std::make_unique<Instance>();
     const anim::Character& character = source.model->character;
+    if (!bone_groups.contains(source.model)) {
+      AllGroups& groups = bone_groups[source.model];
+      for (std::size_t k = 0; k < groups.size(); ++k)
+        groups[k] = anim::character_bone_groups(character, settings::kVsglLightsPerCharacter[k]);
+    }
     for (std::size_t node = 0; node < character.nodes.size(); ++node) {
       const anim::Node& n = character.nodes[node];
       if (n.mesh < 0) continue;
@@ -64,11 +97,15 @@ Status SceneRenderer::upload_instances() {
             if (!uvs) return uvs.error();
             buffers.uvs = std::make_shared<const Buffer>(std::move(*uvs));
           }
+          auto orders = upload_vsgl_orders(context_, character, int(node), original, bone_groups[source.model]);
+          if (!orders) return orders.error();
+          buffers.vsgl_orders = std::move(*orders);
         }
         draw.primitives.push_back(std::move(*uploaded));
         draw.indices.push_back(buffers.indices);
         draw.index_counts.push_back(std::uint32_t(primitive.indices.size()));
         draw.uvs.push_back(buffers.uvs);
+        draw.vsgl_orders.push_back(buffers.vsgl_orders);
         draw.materials.push_back(textures->binding(primitive.material));
       }
       for (std::uint32_t slot = 0; slot < slots; ++slot)

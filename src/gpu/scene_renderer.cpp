@@ -1,5 +1,6 @@
 #include "gpu/scene_renderer.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <functional>
@@ -155,6 +156,14 @@ Result<std::vector<DrawItem>> SceneRenderer::prepare(const FrameRequest& request
     return make_error("render.indirect_method vsgl: " + std::to_string(instances_.size()) + " characters × " +
                       std::to_string(render.vsgl_lights) + " lights, at most " +
                       std::to_string(gpu_layout::kVsglMaxLights) + " lights");
+  // render.vsgl_grouping bone_groups: the triangle order uploaded for K = render.vsgl_lights.
+  const bool by_bone_group = render.indirect_method == settings::IndirectMethod::vsgl &&
+                             render.vsgl_grouping == settings::VsglGrouping::bone_groups;
+  const std::size_t lights_order = std::size_t(
+      std::find(settings::kVsglLightsPerCharacter.begin(), settings::kVsglLightsPerCharacter.end(), render.vsgl_lights) -
+      settings::kVsglLightsPerCharacter.begin());
+  if (by_bone_group && lights_order == settings::kVsglLightsPerCharacter.size())
+    return make_error("render.vsgl_lights " + std::to_string(render.vsgl_lights) + " is not one of 1, 2, 4, 8");
   std::vector<DrawItem> draws;
   for (std::size_t index = 0; index < instances_.size(); ++index) {
     const anim::PoseBuffers& pose = state->instances[index].pose;
@@ -170,10 +179,15 @@ Result<std::vector<DrawItem>> SceneRenderer::prepare(const FrameRequest& request
       if (!mesh.morph_weights.empty())
         std::memcpy(mesh.morph_weights[slot].mapped(), pose.morph_weights.data() + mesh.morph_offset,
                     std::size_t(mesh.morph_weights[slot].size()));
-      for (std::size_t i = 0; i < mesh.primitives.size(); ++i)
+      for (std::size_t i = 0; i < mesh.primitives.size(); ++i) {
         draws.push_back({&mesh.primitives[i].world_positions, &mesh.primitives[i].world_normals, mesh.indices[i].get(),
                          mesh.index_counts[i], mesh.materials[i].base_color,
                          mesh.uvs[i].get(), mesh.materials[i].texture, int(index)});
+        if (by_bone_group) {
+          draws.back().vsgl_indices = &mesh.vsgl_orders[i]->indices;
+          draws.back().vsgl_group_first = mesh.vsgl_orders[i]->first[lights_order];
+        }
+      }
     }
   }
   for (const auto& mesh : static_meshes_) draws.push_back(mesh.draw());

@@ -1,9 +1,12 @@
 #pragma once
 // Internal to SceneRenderer (scene_renderer.cpp, scene_meshes.cpp): its per-model and
 // per-instance GPU data.
+#include <array>
 #include <filesystem>
 #include <memory>
 #include <vector>
+
+#include "settings/render_settings.h"
 
 #include "gpu/scene_renderer.h"
 
@@ -13,6 +16,14 @@ namespace proxygi::gpu {
 struct SceneRenderer::ModelTextures {
   const world::Model* model = nullptr;
   MaterialTextures textures;
+};
+
+// One primitive's triangles in bone-group order (render.vsgl_grouping bone_groups), one order for
+// each K of settings::kVsglLightsPerCharacter, concatenated in that order into one index buffer;
+// first[i]: the K + 1 group starts of the i-th order, in triangles of that buffer.
+struct VsglTriangleOrders {
+  Buffer indices;
+  std::array<std::vector<std::uint32_t>, settings::kVsglLightsPerCharacter.size()> first;
 };
 
 // One mesh node of one instance: its primitives skinned by the node's skin, or (no skin) by a
@@ -25,6 +36,7 @@ struct MeshDraw {
   std::vector<std::shared_ptr<const Buffer>> indices;
   std::vector<std::uint32_t> index_counts;
   std::vector<std::shared_ptr<const Buffer>> uvs;  // static TEXCOORD_0 per primitive; null when absent
+  std::vector<std::shared_ptr<const VsglTriangleOrders>> vsgl_orders;  // per primitive
   std::vector<MaterialBinding> materials;
   std::vector<Buffer> palettes;         // skin matrices, one buffer per ring slot, host-visible
   std::vector<Buffer> normal_palettes;  // their inverse-transposes (anim::normal_matrix layout)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "base/check.h"
 #include "sh/spherical_gaussian.h"
 #include "sh/vsgl.h"
 #include "shaders/shared/layouts.h"
@@ -35,7 +36,7 @@ std::vector<ResourceAccess> VsglLightsPass::accesses(const Inputs& in, const Out
     if (draw.vsgl_light < 0) continue;
     list.push_back(reads(draw.positions));
     list.push_back(reads(draw.normals));
-    list.push_back(reads(draw.indices));
+    list.push_back(reads(draw.vsgl_group_first.empty() ? draw.indices : draw.vsgl_indices));
   }
   return list;
 }
@@ -47,19 +48,27 @@ void VsglLightsPass::record(const Context& context, VkCommandBuffer commands, co
   const std::uint32_t per_sender = std::max(in.lights_per_sender, 1u);
   for (const DrawItem& draw : in.draws) {
     if (draw.vsgl_light < 0) continue;
+    const bool grouped = !draw.vsgl_group_first.empty();
+    PROXYGI_CHECK(!grouped || (draw.vsgl_indices && draw.vsgl_group_first.size() == per_sender + 1),
+                  "bone groups: one start per light and the end");
+    const Buffer& indices = grouped ? *draw.vsgl_indices : *draw.indices;
     const std::uint32_t total = draw.index_count / 3;
     for (std::uint32_t range = 0; range < per_sender; ++range) {
       const std::uint32_t light = std::uint32_t(draw.vsgl_light) * per_sender + range;
-      const std::uint32_t first = std::uint32_t(std::uint64_t(range) * total / per_sender);
-      const std::uint32_t triangles = std::uint32_t(std::uint64_t(range + 1) * total / per_sender) - first;
+      const std::uint32_t first = grouped ? draw.vsgl_group_first[range]
+                                          : std::uint32_t(std::uint64_t(range) * total / per_sender);
+      const std::uint32_t last = grouped ? draw.vsgl_group_first[range + 1]
+                                         : std::uint32_t(std::uint64_t(range + 1) * total / per_sender);
+      const std::uint32_t triangles = last - first;
       const std::uint32_t groups = group_count(triangles, kVsglGroupSize * kVsglTrianglesPerInvocation);
-      if (light >= kVsglMaxLights || groups == 0 || partial + groups > kVsglMaxPartials)
-        continue;  // documented capacity
+      if (light >= kVsglMaxLights) continue;  // documented capacity
+      light_count = std::max(light_count, light + 1);
+      if (groups == 0 || partial + groups > kVsglMaxPartials) continue;  // fitted as zero
       DescriptorPush()
           .uniform_buffer(kVsglBindFrame, *in.constants)
           .storage_buffer(kVsglBindPositions, *draw.positions)
           .storage_buffer(kVsglBindNormals, *draw.normals)
-          .storage_buffer(kVsglBindIndices, *draw.indices)
+          .storage_buffer(kVsglBindIndices, indices)
           .storage_buffer(kVsglBindPartials, *out.partials)
           .storage_buffer(kVsglBindLights, *out.lights)
           .push(context, commands, pipeline_);
@@ -73,7 +82,6 @@ void VsglLightsPass::record(const Context& context, VkCommandBuffer commands, co
       pipeline_.push_constants(commands, &push, sizeof(push));
       vkCmdDispatch(commands, groups, 1, 1);
       partial += groups;
-      light_count = std::max(light_count, light + 1);
     }
   }
   PassBarriers fit;  // the sums, then the fit reading them

@@ -2,7 +2,8 @@
 // VSGL lights (render.indirect_method vsgl; vsgl_lights.comp): each character's skinned triangles
 // as diffuse VPLs lit by the unshadowed SH irradiance, reduced on the GPU into K virtual
 // spherical Gaussian lights per character (DrawItem::vsgl_light; K = render.vsgl_lights, the
-// triangles split into K index ranges — not bone groups), which indirect.comp:vsgl then
+// triangles split into K index ranges or, render.vsgl_grouping bone_groups, the K bone groups of
+// DrawItem::vsgl_group_first), which indirect.comp:vsgl then
 // evaluates at every receiver. Recorded inside frame step 6 (its timing is the indirect pass's).
 //   inputs : frame constants (L̃ order 3), the draws' world positions, normals and indices
 //   outputs: partials (kVsglMaxPartials VsglPartial, scratch), lights (uvec4 count, then
@@ -24,7 +25,9 @@ class VsglLightsPass {
     const Buffer* constants = nullptr;  // FrameConstants (irradiance_sh)
     std::span<const DrawItem> draws;    // only those with vsgl_light ≥ 0 are senders
     // render.vsgl_lights: triangles [k T/K, (k+1) T/K) of each draw of sender s are light s·K + k
-    // (integer division, T the draw's triangle count); lights ≥ kVsglMaxLights are skipped.
+    // (integer division, T the draw's triangle count), or with bone groups (the draw's
+    // vsgl_group_first, K + 1 entries) triangles [first[k], first[k+1]) of its vsgl_indices.
+    // Lights ≥ kVsglMaxLights are skipped; a light without triangles is fitted as zero.
     std::uint32_t lights_per_sender = 1;
   };
   struct Outputs {

@@ -38,6 +38,7 @@ constexpr std::array<Choice, N> choices_of(const Name<Enum> (&names)[N]) {
 constexpr auto kMethodChoices = choices_of(kShadingMethodNames);
 constexpr auto kOperatorChoices = choices_of(kIndirectOperatorNames);
 constexpr auto kIndirectMethodChoices = choices_of(kIndirectMethodNames);
+constexpr auto kVsglGroupingChoices = choices_of(kVsglGroupingNames);
 constexpr auto kExponentialChoices = choices_of(kExponentialNames);
 constexpr auto kUpsamplingChoices = choices_of(kUpsamplingNames);
 constexpr auto kSplatChoices = choices_of(kSplatMethodNames);
@@ -113,9 +114,11 @@ const std::vector<Field>& table() {
                         kSplatChoices),
       choice<&S::indirect_method>("indirect_method", "bounce light: proxy (spheres), vsgl (SG lights) or none",
                                   kNeedPipelines | kNeedConstants, kIndirectMethodChoices),
-      integer<&S::vsgl_lights>("vsgl_lights", "vsgl: lights per character (its triangles in as many index ranges)",
+      integer<&S::vsgl_lights>("vsgl_lights", "vsgl: lights per character (its triangles in as many groups)",
                                kNeedConstants, kVsglLightsPerCharacter.front(), kVsglLightsPerCharacter.back(),
                                kVsglLightsPerCharacter),
+      choice<&S::vsgl_grouping>("vsgl_grouping", "vsgl: a character's lights by index range or by bone group",
+                                kNeedConstants, kVsglGroupingChoices),
       boolean<&S::ground_bounce>("ground_bounce", "light bounced off the lit ground onto receivers above it", kNeedTables),
       choice<&S::tonemap>("tonemap", "display curve", kNeedConstants, kTonemapChoices),
       real<&S::exposure_ev>("exposure_ev", "exposure in stops before the tonemap", kNeedConstants, -kInfinity, -8.0, 8.0),
@@ -127,11 +130,12 @@ const std::vector<Field>& table() {
 // new member stops the build here until its row is added and it is named below too.
 [[maybe_unused]] void every_member_has_a_row(const RenderSettings& settings) {
   const auto& [method, sh_order, receiver_scale, shadow_eta, indirect_eta, sh_window, indirect_operator, exponential,
-               hyb_tau, upsampling, bilateral_depth_epsilon, splat, indirect_method, vsgl_lights, ground_bounce, tonemap,
-               exposure_ev] = settings;
+               hyb_tau, upsampling, bilateral_depth_epsilon, splat, indirect_method, vsgl_lights, vsgl_grouping,
+               ground_bounce, tonemap, exposure_ev] = settings;
   (void)method, (void)sh_order, (void)receiver_scale, (void)shadow_eta, (void)indirect_eta, (void)sh_window;
   (void)indirect_operator, (void)exponential, (void)hyb_tau, (void)upsampling, (void)bilateral_depth_epsilon;
-  (void)splat, (void)indirect_method, (void)vsgl_lights, (void)ground_bounce, (void)tonemap, (void)exposure_ev;
+  (void)splat, (void)indirect_method, (void)vsgl_lights, (void)vsgl_grouping, (void)ground_bounce, (void)tonemap;
+  (void)exposure_ev;
 }
 
 std::string show(double value) {

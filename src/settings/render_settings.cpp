@@ -12,6 +12,7 @@ float exposure_multiplier(const RenderSettings& settings) { return std::exp2(set
 std::string_view name_of(ShadingMethod value) { return name_of(kShadingMethodNames, value); }
 std::string_view name_of(IndirectOperator value) { return name_of(kIndirectOperatorNames, value); }
 std::string_view name_of(IndirectMethod value) { return name_of(kIndirectMethodNames, value); }
+std::string_view name_of(VsglGrouping value) { return name_of(kVsglGroupingNames, value); }
 std::string_view name_of(Exponential value) { return name_of(kExponentialNames, value); }
 std::string_view name_of(Upsampling value) { return name_of(kUpsamplingNames, value); }
 std::string_view name_of(SplatMethod value) { return name_of(kSplatMethodNames, value); }

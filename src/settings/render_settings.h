@@ -33,6 +33,11 @@ enum class IndirectOperator { point, averaged, exact };
 //          visibility (papers/vsgl-tokuyoshi.md; sh/vsgl.h)
 //   none   no bounce light
 enum class IndirectMethod { proxy, vsgl, none };
+// Which triangles of a character each of its render.vsgl_lights VSGL lights summarises:
+//   vertex_ranges  K equal index ranges of each of its primitives
+//   bone_groups    K groups of joints connected in the skeleton with similar vertex counts, each
+//                  triangle in the group of its vertices' dominant joints (anim/bone_groups.h)
+enum class VsglGrouping { vertex_ranges, bone_groups };
 // SH exponential: HYB (OL after halving until |f̂| ≤ τ, then squarings) or OL alone.
 enum class Exponential { hyb, ol };
 enum class Upsampling { bilateral, bilinear };
@@ -45,7 +50,7 @@ enum class Tonemap { aces, reinhard, clamp };
 inline constexpr int kMinShOrder = 3;  // SH order n: n bands, n² coefficients
 inline constexpr int kMaxShOrder = 6;
 inline constexpr std::array<int, 4> kReceiverScales = {1, 2, 4, 8};  // k: receivers at 1/k resolution
-// VSGL lights per character (indirect_method vsgl): its triangles split into this many index ranges.
+// VSGL lights per character (indirect_method vsgl): its triangles split into this many groups.
 inline constexpr std::array<int, 4> kVsglLightsPerCharacter = {1, 2, 4, 8};
 
 struct RenderSettings {
@@ -65,6 +70,7 @@ struct RenderSettings {
   SplatMethod splat = SplatMethod::compute;  // the gather measured faster on lavapipe (README)
   IndirectMethod indirect_method = IndirectMethod::proxy;
   int vsgl_lights = 1;          // VSGL lights per character, one of kVsglLightsPerCharacter
+  VsglGrouping vsgl_grouping = VsglGrouping::vertex_ranges;  // how those lights split its triangles
   // Receivers above the ground plane see the lit ground (albedo × its unshadowed irradiance / π)
   // below their horizon instead of the environment's below-horizon radiance (sh/ground_bounce.h).
   bool ground_bounce = true;
@@ -86,6 +92,8 @@ inline constexpr Name<IndirectOperator> kIndirectOperatorNames[] = {
     {"point", IndirectOperator::point}, {"averaged", IndirectOperator::averaged}, {"exact", IndirectOperator::exact}};
 inline constexpr Name<IndirectMethod> kIndirectMethodNames[] = {
     {"proxy", IndirectMethod::proxy}, {"vsgl", IndirectMethod::vsgl}, {"none", IndirectMethod::none}};
+inline constexpr Name<VsglGrouping> kVsglGroupingNames[] = {{"vertex_ranges", VsglGrouping::vertex_ranges},
+                                                            {"bone_groups", VsglGrouping::bone_groups}};
 inline constexpr Name<Exponential> kExponentialNames[] = {{"hyb", Exponential::hyb}, {"ol", Exponential::ol}};
 inline constexpr Name<Upsampling> kUpsamplingNames[] = {{"bilateral", Upsampling::bilateral},
                                                         {"bilinear", Upsampling::bilinear}};
@@ -103,6 +111,7 @@ constexpr std::string_view name_of(const Name<Enum> (&table)[N], Enum value) {
 std::string_view name_of(ShadingMethod value);
 std::string_view name_of(IndirectOperator value);
 std::string_view name_of(IndirectMethod value);
+std::string_view name_of(VsglGrouping value);
 std::string_view name_of(Exponential value);
 std::string_view name_of(Upsampling value);
 std::string_view name_of(SplatMethod value);

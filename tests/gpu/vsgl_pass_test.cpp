@@ -1,12 +1,15 @@
 // render.indirect_method vsgl on the GPU (vsgl_lights.comp, indirect.comp:vsgl) against its CPU
-// twin (sh/vsgl.h): two sender meshes (each K = 1 or 4 lights) over a ground plane under a
-// directional sky. The fitted lights match the CPU fit of the same triangles, and the indirect
+// twin (sh/vsgl.h): two sender meshes (each K = 1 or 4 lights, by index range or by group: the
+// triangles reordered by anim::group_triangles, here with longitude sectors as the vertex groups)
+// over a ground plane under a directional sky. The fitted lights match the CPU fit of the same triangles, and the indirect
 // irradiance at sample receivers matches sh::vsgl_irradiance at the GPU's receivers (relative
 // error ≤ 1e-3, as the other passes' twins). Validation layer on, no message.
 #include <cmath>
 #include <numbers>
 
+#include "anim/bone_groups.h"
 #include "frame_fixture.h"
+#include "gpu/transfer.h"
 #include "gpu_test_context.h"
 #include "sh/basis.h"
 #include "sh/vsgl.h"
@@ -21,6 +24,7 @@ struct Mesh {
   std::vector<glm::vec3> positions, normals;
   std::vector<std::uint32_t> indices;
   glm::vec4 albedo{1.0f};
+  std::vector<int> sector;  // per vertex: its longitude φ as a fraction of a turn, times 1000
 };
 
 Mesh uv_sphere(const glm::vec3& center, float radius, int rings, int segments, const glm::vec4& albedo) {
@@ -33,6 +37,7 @@ Mesh uv_sphere(const glm::vec3& center, float radius, int rings, int segments, c
       const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
       mesh.positions.push_back(center + radius * n);
       mesh.normals.push_back(n);
+      mesh.sector.push_back(std::min(999, 1000 * s / segments));
     }
   const std::uint32_t row = std::uint32_t(segments + 1);
   for (int r = 0; r < rings; ++r)
@@ -51,19 +56,17 @@ sh::RgbSh sky() {
   return lighting;
 }
 
-// The CPU twin of vsgl_lights.comp: the same VPLs from the same triangles (index range `range`
-// of `ranges`), summed relative to the range's first centroid, and fitted.
-std::optional<sh::Vsgl> cpu_light(const Mesh& mesh, const render::FrameTables& tables, std::size_t range,
-                                  std::size_t ranges) {
+// The CPU twin of vsgl_lights.comp: the same VPLs from the same triangles (triangles
+// [first, last) of `indices`), summed relative to the first centroid, and fitted.
+std::optional<sh::Vsgl> cpu_light(const Mesh& mesh, std::span<const std::uint32_t> indices,
+                                  const render::FrameTables& tables, std::size_t first, std::size_t last) {
   sh::VsglSums sums;
   glm::dvec3 origin(0.0);
-  const std::size_t triangles = mesh.indices.size() / 3;
-  const std::size_t first = range * triangles / ranges, last = (range + 1) * triangles / ranges;
   for (std::size_t t = 3 * first; t < 3 * last; t += 3) {
-    const glm::dvec3 p0(mesh.positions[mesh.indices[t]]), p1(mesh.positions[mesh.indices[t + 1]]),
-        p2(mesh.positions[mesh.indices[t + 2]]);
-    const glm::dvec3 summed = glm::dvec3(mesh.normals[mesh.indices[t]]) + glm::dvec3(mesh.normals[mesh.indices[t + 1]]) +
-                              glm::dvec3(mesh.normals[mesh.indices[t + 2]]);
+    const glm::dvec3 p0(mesh.positions[indices[t]]), p1(mesh.positions[indices[t + 1]]),
+        p2(mesh.positions[indices[t + 2]]);
+    const glm::dvec3 summed = glm::dvec3(mesh.normals[indices[t]]) + glm::dvec3(mesh.normals[indices[t + 1]]) +
+                              glm::dvec3(mesh.normals[indices[t + 2]]);
     sh::VirtualPointLight vpl;
     vpl.position = (p0 + p1 + p2) / 3.0;
     vpl.normal = glm::normalize(summed);
@@ -81,17 +84,20 @@ std::optional<sh::Vsgl> cpu_light(const Mesh& mesh, const render::FrameTables& t
   return sh::fit_vsgl(sums, origin);
 }
 
-// K = render.vsgl_lights lights per sender: 1 (the default) and 4 (index ranges).
-class VsglPassLights : public VsglPassTest, public ::testing::WithParamInterface<int> {};
+// K = render.vsgl_lights lights per sender: 1 (the default) and 4, by index ranges or by groups.
+class VsglPassLights : public VsglPassTest,
+                       public ::testing::WithParamInterface<std::tuple<int, settings::VsglGrouping>> {};
 
 TEST_P(VsglPassLights, LightsAndIrradianceMatchTheCpuTwin) {
-  const int per_sender = GetParam();
+  const auto [per_sender, grouping] = GetParam();
+  const bool by_group = grouping == settings::VsglGrouping::bone_groups;
   FrameConfig config;
   config.width = config.height = 64;
   config.frames_in_flight = 1;
   config.render.receiver_scale = 2;
   config.render.indirect_method = settings::IndirectMethod::vsgl;
   config.render.vsgl_lights = per_sender;
+  config.render.vsgl_grouping = grouping;
   const render::FrameTables tables = render::make_frame_tables(sky(), config.render);
   const testing::GroundMesh ground = testing::ground_plane(20.0f, 4);
   // 40 × 40 × 2 triangles: more than one workgroup of partials per light.
@@ -106,10 +112,26 @@ TEST_P(VsglPassLights, LightsAndIrradianceMatchTheCpuTwin) {
     ASSERT_TRUE(uploaded.ok());
     meshes.push_back(std::move(*uploaded));
   }
+  // Groups: K longitude sectors of each sender, its triangles reordered by sector.
+  std::vector<anim::GroupedTriangles> grouped;
+  std::vector<Buffer> grouped_buffers;
+  for (const Mesh& sender : senders) {
+    std::vector<int> vertex_group;
+    for (int sector : sender.sector) vertex_group.push_back(sector * per_sender / 1000);
+    grouped.push_back(anim::group_triangles(sender.indices, vertex_group, per_sender));
+    auto buffer = create_buffer_with_data(context(), as_bytes(std::span<const std::uint32_t>(grouped.back().indices)),
+                                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    ASSERT_TRUE(buffer.ok());
+    grouped_buffers.push_back(std::move(*buffer));
+  }
   std::vector<DrawItem> draws;
   for (std::size_t i = 0; i < meshes.size(); ++i) {
     draws.push_back(meshes[i].draw());
     draws.back().vsgl_light = int(i) - 1;  // the ground sends nothing
+    if (by_group && i > 0) {
+      draws.back().vsgl_indices = &grouped_buffers[i - 1];
+      draws.back().vsgl_group_first = grouped[i - 1].first;
+    }
   }
   auto frame = SoftGiFrame::create(context(), config, tables, image::ImageF(8, 4, glm::vec4(1.0f)));
   ASSERT_TRUE(frame.ok()) << frame.message();
@@ -125,8 +147,13 @@ TEST_P(VsglPassLights, LightsAndIrradianceMatchTheCpuTwin) {
   ASSERT_EQ(lights->size(), 2u * std::size_t(per_sender));
   std::vector<sh::Vsgl> cpu;
   for (std::size_t k = 0; k < lights->size(); ++k) {
-    auto expected = cpu_light(senders[k / std::size_t(per_sender)], tables, k % std::size_t(per_sender),
-                              std::size_t(per_sender));
+    const std::size_t sender = k / std::size_t(per_sender), range = k % std::size_t(per_sender);
+    const Mesh& mesh = senders[sender];
+    const std::size_t triangles = mesh.indices.size() / 3;
+    auto expected = by_group ? cpu_light(mesh, grouped[sender].indices, tables, grouped[sender].first[range],
+                                         grouped[sender].first[range + 1])
+                             : cpu_light(mesh, mesh.indices, tables, range * triangles / std::size_t(per_sender),
+                                         (range + 1) * triangles / std::size_t(per_sender));
     ASSERT_TRUE(expected);
     cpu.push_back(*expected);
     const gpu_layout::VsglLight& gpu = (*lights)[k];
@@ -165,7 +192,10 @@ TEST_P(VsglPassLights, LightsAndIrradianceMatchTheCpuTwin) {
   EXPECT_GE(lit, 100) << "the samples must include receivers lit by the lights";
 }
 
-INSTANTIATE_TEST_SUITE_P(PerSender, VsglPassLights, ::testing::Values(1, 4));
+INSTANTIATE_TEST_SUITE_P(PerSender, VsglPassLights,
+                         ::testing::Combine(::testing::Values(1, 4),
+                                            ::testing::Values(settings::VsglGrouping::vertex_ranges,
+                                                              settings::VsglGrouping::bone_groups)));
 
 }  // namespace
 }  // namespace proxygi::gpu
