@@ -21,7 +21,7 @@ struct StabilityArgs {
   std::vector<std::string> sweeps;
   std::string out = "out/stability";
   std::string cache = "out/chart-cache";
-  std::string chart_csv = "docs/bench-chart.csv";
+  std::string chart_csv;  // empty: the committed docs/bench-chart.csv beside assets/
   int noise_size = 96;
 };
 
@@ -36,7 +36,9 @@ int run_bench_stability(const StabilityArgs& args) {
     }
   }
   double best_relative_mse = 0.0;
-  const MethodTimings timings = timings_from_chart_csv(args.chart_csv, &best_relative_mse);
+  const std::string chart_csv =
+      args.chart_csv.empty() ? (assets_dir().parent_path() / "docs" / "bench-chart.csv").string() : args.chart_csv;
+  const MethodTimings timings = timings_from_chart_csv(chart_csv, &best_relative_mse);
   study::StabilityOptions options;
   options.quick = args.quick;
   options.assets_dir = assets_dir();
@@ -72,8 +74,8 @@ void add_bench_stability_command(CLI::App& bench, CommandRunner& runner) {
   command->add_option("--sweeps", args->sweeps, "Only these sweeps (S1,...,S8,S10)")->delimiter(',');
   command->add_option("--out", args->out, "Folder for bench-stability.json, .md and the charts")->capture_default_str();
   command->add_option("--cache", args->cache, "Folder of cached proxy rigs (S10's scene)")->capture_default_str();
-  command->add_option("--chart-csv", args->chart_csv, "bench-chart.csv giving ms per frame (robustness-speed chart) and S10's threshold")
-      ->capture_default_str();
+  command->add_option("--chart-csv", args->chart_csv, "bench-chart.csv giving ms per frame (robustness-speed chart) and S10's threshold "
+                      "(default: the committed docs/bench-chart.csv)");
   command->add_option("--noise-size", args->noise_size, "S10: square image size in pixels")
       ->check(CLI::Range(settings::kMinImageSize, settings::kMaxImageSize))
       ->capture_default_str();

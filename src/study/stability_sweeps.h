@@ -15,7 +15,7 @@
 //   S4 order and window  n = 3..6 × window: overshoot above unshadowed (u), negativity (u), before the F4 clamp
 //   S5 silhouettes       k = 2..8 × upsampler × camera distance: edge-band error over interior error
 //   S6 influence fade    a sphere from 40r to 2r, η × light: entry step (u), missing shadow (u)
-//   S7 camera crawl      static world, moving camera, k × upsampler: flicker F (u), exact reprojection
+//   S7 camera crawl      static world, moving camera, k × upsampler: flicker (u) of the error against k = 1 and F, exact reprojection
 //   S8 LOD switch        64 → 8 spheres, hard vs cross-fade: pop (u)
 //   S10 noise floor      path tracing at 2 seeds: relative-MSE floor per spp
 // u = 1/255 of the receiver's unshadowed shade (stability_metrics.h). Shading is Rec. 709 luminance
