@@ -42,13 +42,14 @@ SweepGBuffer trace_gbuffer(std::span<const render::Sphere> spheres, const SweepC
       int label = -1;
       glm::vec3 normal(0.0f, 1.0f, 0.0f);
       if (d.y < 0.0f) best = -camera.eye.y / d.y, label = 0;
-      for (const render::Sphere& s : spheres) {
+      for (std::size_t index = 0; index < spheres.size(); ++index) {
+        const render::Sphere& s = spheres[index];
         const glm::vec3 o = camera.eye - s.center;
         const float half_b = glm::dot(o, d), c = glm::dot(o, o) - s.radius * s.radius;
         const float disc = half_b * half_b - c;
         if (disc < 0.0f) continue;
         const float t = -half_b - std::sqrt(disc);
-        if (t > 0.0f && t < best) best = t, label = 1, normal = glm::normalize(camera.eye + t * d - s.center);
+        if (t > 0.0f && t < best) best = t, label = 1 + int(index), normal = glm::normalize(camera.eye + t * d - s.center);
       }
       if (label < 0) continue;
       const std::size_t i = std::size_t(y) * std::size_t(size) + std::size_t(x);

@@ -25,7 +25,7 @@ struct SweepGBuffer {
   std::vector<glm::vec3> position;  // world, m
   std::vector<glm::vec3> normal;
   ref::Plane depth;                 // eye depth, m; 0 = background
-  std::vector<int> label;           // -1 background, 0 ground, 1 a sphere
+  std::vector<int> label;           // -1 background, 0 ground, 1 + i sphere i
 };
 SweepGBuffer trace_gbuffer(std::span<const render::Sphere> spheres, const SweepCamera& camera, int size);
 

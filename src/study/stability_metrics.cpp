@@ -90,6 +90,14 @@ ref::ReceiverMask edge_band_mask(const ref::Plane& depth, int radius, double rel
   });
 }
 
+ref::ReceiverMask label_edge_band_mask(int width, int height, std::span<const int> labels, int radius) {
+  PROXYGI_CHECK(labels.size() == std::size_t(width) * std::size_t(height), "label_edge_band_mask: labels do not cover the image");
+  // As depths every label is positive and any change is a jump (relative_jump 0).
+  ref::Plane as_depth(width, height);
+  for (std::size_t i = 0; i < labels.size(); ++i) as_depth.values[i] = float(labels[i]) - float(*std::min_element(labels.begin(), labels.end())) + 1.0f;
+  return edge_band_mask(as_depth, radius, 0.0);
+}
+
 ref::ReceiverMask label_mask(int width, int height, std::span<const int> labels, int label) {
   PROXYGI_CHECK(labels.size() == std::size_t(width) * std::size_t(height), "label_mask: labels do not cover the image");
   return ref::mask_where(width, height, [&](int x, int y) { return labels[std::size_t(y) * std::size_t(width) + std::size_t(x)] == label; });

@@ -46,6 +46,9 @@ ref::ReceiverMask shadow_mask(const ref::Plane& reference, const ref::Plane& uns
 // depth discontinuity: one is background (depth ≤ 0) and the other not, or their eye depths differ
 // by more than `relative_jump` × the nearer one.
 ref::ReceiverMask edge_band_mask(const ref::Plane& eye_depth, int radius, double relative_jump = 0.1);
+// Pixels within `radius` pixels of a label change between 4-neighbours (silhouettes of objects
+// against each other and the background, whatever their depths).
+ref::ReceiverMask label_edge_band_mask(int width, int height, std::span<const int> labels, int radius);
 // Pixels whose label equals `label` (labels.size() = width * height).
 ref::ReceiverMask label_mask(int width, int height, std::span<const int> labels, int label);
 // Contact band: distance to the nearest proxy surface / that proxy's radius below `limit` (d < r).

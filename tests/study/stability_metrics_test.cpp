@@ -66,6 +66,14 @@ TEST(StabilityRegions, EdgeBandMarksBothSidesOfDepthJumpsAndWidensByRadius) {
   EXPECT_EQ(edge_band_mask(square, 0).count(), 4u);
 }
 
+TEST(StabilityRegions, LabelEdgeBandFollowsLabelChangesWhateverTheDepth) {
+  // Labels -1, 0, 0, 1, 1, 1: changes between pixels 0|1 and 2|3; radius 0 marks 0..3.
+  const std::vector<int> labels = {-1, 0, 0, 1, 1, 1};
+  EXPECT_EQ(label_edge_band_mask(6, 1, labels, 0).receiver, (std::vector<std::uint8_t>{1, 1, 1, 1, 0, 0}));
+  // Radius 1 widens it by one pixel: 0..4.
+  EXPECT_EQ(label_edge_band_mask(6, 1, labels, 1).receiver, (std::vector<std::uint8_t>{1, 1, 1, 1, 1, 0}));
+}
+
 TEST(StabilityRegions, LabelsContactBandAndCombinations) {
   const std::vector<int> labels = {0, 1, 1, 2};
   const ref::ReceiverMask character = label_mask(4, 1, labels, 1);

@@ -7,6 +7,7 @@
 #include "sh/basis.h"
 #include "sh/occlusion_tables.h"
 #include "sh/rotation.h"
+#include "study/stability_frame.h"
 #include "study/stability_shading.h"
 #include "study/stability_sweeps.h"
 
@@ -106,6 +107,31 @@ TEST_P(QuickSweep, OutputsStayInBoundsAndEveryMetricIsMeasured) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Stability, QuickSweep, ::testing::Values("S1", "S2", "S3", "S4", "S5", "S6", "S7", "S8"));
+
+}  // namespace
+}  // namespace proxygi::study
+
+namespace proxygi::study {
+namespace {
+
+TEST(StabilityFrame, SeesTheCharacterFromFarAndUpsamplingChangesItsEdges) {
+  const render::FrameTables tables = sweep_tables(sweep_lighting(SweepLight::sky), 4, 8.0);
+  const std::vector<render::Sphere> spheres = {{{0.0f, 0.25f, 0.0f}, 0.25f, glm::vec3(0.8f)}};
+  for (float distance : {1.0f, 16.0f}) {
+    SweepCamera camera;
+    camera.eye = glm::vec3(0.0f, 0.5f, 0.0f) + distance * glm::vec3(1.2f, 0.9f, 2.2f);
+    camera.target = glm::vec3(0.0f, 0.45f, 0.0f);
+    camera.fov_y_degrees = 40.0f / distance;
+    const SweepGBuffer g = trace_gbuffer(spheres, camera, 64);
+    std::size_t sphere_pixels = 0, ground_pixels = 0;
+    for (int label : g.label) sphere_pixels += label == 1, ground_pixels += label == 0;
+    EXPECT_GT(sphere_pixels, 100u) << distance;
+    EXPECT_GT(ground_pixels, 100u) << distance;
+    const SweepImage full = render_sweep_frame(tables, spheres, g, 1, settings::Upsampling::bilinear, 0.01f);
+    const SweepImage coarse = render_sweep_frame(tables, spheres, g, 4, settings::Upsampling::bilinear, 0.01f);
+    EXPECT_GT(absolute_error(coarse.shade, full.shade).max, 0.0) << distance;
+  }
+}
 
 }  // namespace
 }  // namespace proxygi::study
