@@ -190,7 +190,7 @@ std::string stability_markdown(const std::vector<study::SweepResult>& sweeps) {
       const study::SweepMetric& metric = sweep.metrics[std::size_t(key.second)];
       md << "| " << key.first << " | " << metric.name << " (" << metric.unit << ") | " << number(worst.value) << " | "
          << (std::isfinite(metric.threshold) ? number(metric.threshold) : std::string("none")) << " | " << worst.failures << "/"
-         << worst.points << " | " << (worst.failures == 0 ? "pass" : "fail") << " |\n";
+         << worst.points << " | " << (!std::isfinite(metric.threshold) ? "measured" : worst.failures == 0 ? "pass" : "fail") << " |\n";
     }
     const study::BoundsCounts& b = sweep.bounds;
     if (b.pixels > 0)
@@ -209,7 +209,8 @@ std::string stability_summary_text(const std::vector<study::SweepResult>& sweeps
     for (const auto& [key, worst] : worst_per_method(sweep)) {
       const study::SweepMetric& metric = sweep.metrics[std::size_t(key.second)];
       text << "  " << key.first << ", " << metric.name << ": worst " << number(worst.value) << " " << metric.unit << " (threshold "
-           << number(metric.threshold) << ") " << (worst.failures == 0 ? "pass" : "FAIL") << "\n";
+           << number(metric.threshold) << ") " << (!std::isfinite(metric.threshold) ? "measured" : worst.failures == 0 ? "pass" : "FAIL")
+           << "\n";
     }
     const study::BoundsCounts& b = sweep.bounds;
     if (b.pixels > 0)

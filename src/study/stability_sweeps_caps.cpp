@@ -20,7 +20,7 @@ SweepResult pass_through(const StabilityOptions& options) {
   sweep.id = "S2";
   sweep.title = "pass-through: a sphere of radius r slides through the receiver (n = 4, sky, step r/200)";
   sweep.x_label = "position / r (h: height of the center above the receiver's plane; x: sideways)";
-  sweep.metrics = {{"excess step over the truth's", "u", 2.0}, {"error for |h| < r", "% of unshadowed", 10.0}};
+  sweep.metrics = {{"excess step over the truth's", "u", 2.0}, {"error while abs(h) < r", "% of unshadowed", 10.0}};
   const render::FrameTables tables = sweep_tables(sweep_lighting(SweepLight::sky), 4, 8.0);
   const TruthIntegrator truth(tables, 32);
   const float r = 0.25f;
@@ -58,7 +58,7 @@ SweepResult pass_through(const StabilityOptions& options) {
       }
       add_point(sweep, name, std::string(name) + " " + path.name + " (max)", 0.0, 0, worst_step);
       sweep.notes.push_back(std::string(name) + " " + path.name + ": largest excess step " + fixed(worst_step, 2) + "u at " +
-                            fixed(worst_step_at, 3) + "r; largest error for |h| < r " + fixed(worst_error, 1) + " %");
+                            fixed(worst_step_at, 3) + "r; largest error while abs(h) < r " + fixed(worst_error, 1) + " %");
     }
   }
   return sweep;

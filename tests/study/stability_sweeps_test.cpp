@@ -135,3 +135,36 @@ TEST(StabilityFrame, SeesTheCharacterFromFarAndUpsamplingChangesItsEdges) {
 
 }  // namespace
 }  // namespace proxygi::study
+
+namespace proxygi::study {
+namespace {
+
+// F7 and F10 measured under 1u (README "Where each method fails"): these keep them there.
+TEST(StabilityContinuity, HybSwitchJumpsStayUnderOneDisplayStep) {
+  StabilityOptions options;
+  options.quick = true;
+  const SweepResult sweep = sweep_large_caps(options);
+  std::size_t switches = 0;
+  for (const SweepPoint& p : sweep.points)
+    if (sweep.metrics[std::size_t(p.metric)].name == "HYB switch jump") {
+      ++switches;
+      EXPECT_LE(p.value, 1.0) << p.series << " at |f| = " << p.x;
+    }
+  EXPECT_EQ(switches, 20u);  // orders 3..6 x squarings 0..4
+}
+
+TEST(StabilityContinuity, InfluenceFadeStepStaysUnderOneDisplayStepAtTheDefaultEta) {
+  StabilityOptions options;
+  options.quick = true;
+  const SweepResult sweep = sweep_influence_fade(options);
+  std::size_t checked = 0;
+  for (const SweepPoint& p : sweep.points)
+    if (p.metric == 0 && p.x == double(settings::RenderSettings{}.shadow_eta)) {
+      ++checked;
+      EXPECT_LE(p.value, 1.0) << p.series;
+    }
+  EXPECT_EQ(checked, 2u);  // sky and delta light
+}
+
+}  // namespace
+}  // namespace proxygi::study
