@@ -47,6 +47,13 @@ std::vector<std::pair<std::pair<std::string, int>, Worst>> worst_per_method(cons
   return out;
 }
 
+// A table cell: '|' would end it.
+std::string cell(const std::string& text) {
+  std::string out;
+  for (char c : text) out += c == '|' ? std::string("\\|") : std::string(1, c);
+  return out;
+}
+
 std::string number(double v) {
   if (!std::isfinite(v)) return v > 0 ? "inf" : "-";
   char text[32];
@@ -188,7 +195,7 @@ std::string stability_markdown(const std::vector<study::SweepResult>& sweeps) {
     md << "| method | metric | worst | threshold | failing points | result |\n|---|---|---|---|---|---|\n";
     for (const auto& [key, worst] : worst_per_method(sweep)) {
       const study::SweepMetric& metric = sweep.metrics[std::size_t(key.second)];
-      md << "| " << key.first << " | " << metric.name << " (" << metric.unit << ") | " << number(worst.value) << " | "
+      md << "| " << key.first << " | " << cell(metric.name) << " (" << metric.unit << ") | " << number(worst.value) << " | "
          << (std::isfinite(metric.threshold) ? number(metric.threshold) : std::string("none")) << " | " << worst.failures << "/"
          << worst.points << " | " << (!std::isfinite(metric.threshold) ? "measured" : worst.failures == 0 ? "pass" : "fail") << " |\n";
     }
