@@ -1,4 +1,4 @@
-// proxygi bench: studies (sh, frame, chart) and the Google Benchmark micro benchmarks
+// proxygi bench: studies (sh, frame, chart, stability) and the Google Benchmark micro benchmarks
 // (benchmarks/*.cpp, linked into this binary), e.g. `proxygi bench micro --filter '^anim/'`.
 #include <benchmark/benchmark.h>
 
@@ -58,6 +58,7 @@ void add_bench_command(CLI::App& app, CommandRunner& runner) {
   add_bench_record_command(*bench, runner);
   add_bench_sampler_command(*bench, runner);
   add_bench_chart_command(*bench, runner);
+  add_bench_stability_command(*bench, runner);
 }
 
 }  // namespace proxygi::app

@@ -1,6 +1,7 @@
-// proxygi compare TEST REFERENCE [--json] [--mask MASK.png] [--error-image OUT.png]: RMSE,
-// relative MSE, SSIM and FLIP of a test image against a reference, and both images' mean
-// luminance, over receiver pixels.
+// proxygi compare TEST REFERENCE [--json] [--mask MASK.png] [--error-image OUT.png]
+//   [--unshadowed IMAGE] [--depth IMAGE] [--edge-radius N]: RMSE, relative MSE, SSIM and FLIP of a
+// test image against a reference, and both images' mean luminance, over receiver pixels; bounds
+// (negative, NaN/Inf, above unshadowed) and per-region scores (apps/compare_regions.h).
 // Unreadable images, a size mismatch or an empty mask exit with code 2; a failed error-image
 // write exits with code 1.
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/commands.h"
+#include "apps/compare_regions.h"
 #include "image/image.h"
 #include "ref/error_image.h"
 #include "ref/flip.h"
@@ -32,6 +34,7 @@ struct CompareArgs {
   double pixels_per_degree = ref::kDefaultPixelsPerDegree;
   float error_scale = 0.0f;  // 0: 1 for FLIP, the map's maximum for RMSE
   bool json = false;
+  RegionInputs regions;
 };
 
 bool is_high_dynamic_range_file(const std::string& path) {
@@ -94,6 +97,9 @@ int run_compare(const CompareArgs& args) {
       return fail_runtime(written.message());
   }
 
+  auto regions = region_scores(*test, *reference, receivers, args.regions);
+  if (!regions) return fail_bad_input(regions.message());
+
   nlohmann::json out = {
       {"test", args.test},
       {"reference", args.reference},
@@ -111,6 +117,8 @@ int run_compare(const CompareArgs& args) {
       {"pixels_per_degree", args.pixels_per_degree},
       {"flip_exposures", exposures},
       {"error_image", args.error_image.empty() ? nlohmann::json() : nlohmann::json(args.error_image)},
+      {"bounds", (*regions)["bounds"]},
+      {"regions", (*regions)["regions"]},
   };
   if (args.json) {
     std::printf("%s\n", out.dump(2).c_str());
@@ -136,6 +144,7 @@ int run_compare(const CompareArgs& args) {
     std::printf("FLIP       %.6f (LDR-FLIP, %.1f ppd)\n", flip.mean, args.pixels_per_degree);
   }
   if (!args.error_image.empty()) std::printf("error map  %s (%s)\n", args.error_image.c_str(), args.error_metric.c_str());
+  std::printf("%s", region_text(*regions).c_str());
   return kExitOk;
 }
 
@@ -149,6 +158,10 @@ void add_compare_command(CLI::App& app, CommandRunner& runner) {
   command->add_flag("--json", args.json, "Print one JSON object");
   command->add_option("--mask", args.mask, "Receiver mask image: white (max(r,g,b) * alpha > 0.5) pixels are averaged");
   command->add_option("--error-image", args.error_image, "Write a false-color error map (PNG)");
+  command->add_option("--unshadowed", args.regions.unshadowed,
+                      "The frame without proxies: bounds above it and the shadow region (reference < 99 % of it)");
+  command->add_option("--depth", args.regions.depth, "Eye depth image (red channel, 0 = background): edge band and interior regions");
+  command->add_option("--edge-radius", args.regions.edge_radius, "Edge band half-width in pixels (default 1)")->check(CLI::Range(0, 64));
   command->add_option("--error-metric", args.error_metric, "Map drawn by --error-image: flip (0..1) or rmse")
       ->check(CLI::IsMember({"flip", "rmse"}));
   command->add_option("--error-scale", args.error_scale,

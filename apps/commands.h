@@ -54,5 +54,6 @@ void add_bench_frame_command(CLI::App& bench, CommandRunner& runner);  // bench_
 void add_bench_record_command(CLI::App& bench, CommandRunner& runner);  // bench_record.cpp
 void add_bench_sampler_command(CLI::App& bench, CommandRunner& runner);  // bench_sampler.cpp
 void add_bench_chart_command(CLI::App& bench, CommandRunner& runner);  // bench_chart.cpp
+void add_bench_stability_command(CLI::App& bench, CommandRunner& runner);  // bench_stability.cpp
 
 }  // namespace proxygi::app

@@ -1,0 +1,141 @@
+// S5 silhouettes and S7 camera crawl on the small CPU frame (stability_frame.h): a posed
+// "character" of five spheres standing on the ground.
+#include <algorithm>
+#include <cmath>
+
+#include "study/stability_frame.h"
+#include "study/stability_sweep_parts.h"
+
+namespace proxygi::study {
+namespace {
+
+constexpr float kEpsilon = 0.01f;  // settings::RenderSettings::bilateral_depth_epsilon's default
+
+std::vector<render::Sphere> character() {
+  const glm::vec3 albedo(0.8f);
+  return {{{0.0f, 0.25f, 0.0f}, 0.25f, albedo}, {{0.0f, 0.62f, 0.0f}, 0.15f, albedo}, {{0.0f, 0.85f, 0.0f}, 0.1f, albedo},
+          {{0.24f, 0.6f, 0.0f}, 0.06f, albedo}, {{-0.24f, 0.6f, 0.0f}, 0.06f, albedo}};
+}
+
+const settings::Upsampling kUpsamplers[2] = {settings::Upsampling::bilateral, settings::Upsampling::bilinear};
+const char* kUpsamplerNames[2] = {"bilateral", "bilinear"};
+
+// Per-pixel values in units of u (the pixel's own unshadowed shade / 255).
+ref::Plane in_u(const SweepImage& image) {
+  ref::Plane out = image.shade;
+  for (std::size_t i = 0; i < out.values.size(); ++i) {
+    const float open = image.pixel_unshadowed.values[i];
+    out.values[i] = open > 0.0f ? out.values[i] / (open * float(kDisplayStep)) : 0.0f;
+  }
+  return out;
+}
+
+void count_image(SweepResult& sweep, const SweepImage& image, const SweepGBuffer& g) {
+  const ref::ReceiverMask covered = ref::mask_where(g.size, g.size, [&](int x, int y) { return g.label[std::size_t(y * g.size + x)] >= 0; });
+  sweep.bounds.merge(count_bounds(image.shade, image.unshadowed, &covered));
+}
+
+SweepResult silhouettes(const StabilityOptions& options) {
+  SweepResult sweep;
+  sweep.id = "S5";
+  sweep.title = "silhouettes: a five-sphere character on the ground, error of 1/k receivers against k = 1 (n = 4, sky)";
+  sweep.x_label = "receiver scale k";
+  sweep.log_x = true;
+  sweep.metrics = {{"edge-band error / interior error (interior floored at 0.1u)", "ratio", 2.0},
+                   {"edge-band mean error", "u", INFINITY}};
+  const render::FrameTables tables = sweep_tables(sweep_lighting(SweepLight::sky), 4, 8.0);
+  const std::vector<render::Sphere> spheres = character();
+  const int size = options.quick ? 96 : 128;
+  for (float distance : {1.0f, 4.0f, 16.0f}) {
+    SweepCamera camera;
+    camera.eye = glm::vec3(0.0f, 0.5f, 0.0f) + distance * glm::vec3(1.2f, 0.9f, 2.2f);
+    camera.target = glm::vec3(0.0f, 0.45f, 0.0f);
+    camera.fov_y_degrees = 40.0f / distance;  // the character keeps its size; the ground recedes to the horizon
+    const SweepGBuffer g = trace_gbuffer(spheres, camera, size);
+    const SweepImage full = render_sweep_frame(tables, spheres, g, 1, settings::Upsampling::bilinear, kEpsilon);
+    count_image(sweep, full, g);
+    const ref::Plane reference = in_u(full);
+    const ref::ReceiverMask covered = ref::mask_where(size, size, [&](int x, int y) { return g.label[std::size_t(y * size + x)] >= 0; });
+    // Silhouettes by label (sphere against sphere, ground or sky): at 16x the character stands only
+    // 2.4 % of the eye depth before the ground, below any depth-jump threshold the near ground passes.
+    const ref::ReceiverMask edge = mask_and(label_edge_band_mask(size, size, g.label, 1), covered);
+    const ref::ReceiverMask interior = mask_and_not(covered, edge);
+    for (int k : {2, 4, 8})
+      for (int u = 0; u < 2; ++u) {
+        const SweepImage image = render_sweep_frame(tables, spheres, g, k, kUpsamplers[u], kEpsilon);
+        count_image(sweep, image, g);
+        const ref::Plane test = in_u(image);
+        const ErrorSummary at_edges = absolute_error(test, reference, &edge);
+        const ErrorSummary inside = absolute_error(test, reference, &interior);
+        const std::string series = std::string(kUpsamplerNames[u]) + " distance " + fixed(distance, 0) + "x";
+        add_point(sweep, kUpsamplerNames[u], series, k, 0, at_edges.mean / std::max(inside.mean, 0.1));
+        add_point(sweep, kUpsamplerNames[u], series, k, 1, at_edges.mean);
+      }
+  }
+  sweep.notes.push_back("edge band: 1 px around the silhouettes of the spheres (study::label_edge_band_mask); the camera's field of view "
+                        "narrows with its distance so the character keeps its size on screen");
+  return sweep;
+}
+
+SweepResult camera_crawl(const StabilityOptions& options) {
+  SweepResult sweep;
+  sweep.id = "S7";
+  sweep.title = "camera crawl: static character and ground, the camera orbits 20 deg and dollies in (n = 4, sky)";
+  sweep.x_label = "receiver scale k";
+  sweep.log_x = true;
+  // F as the notes define it (no reference), and F of the error against the frame's own k = 1 image
+  // (every pixel shaded exactly by the twin): the first includes the pixel grid sliding over the
+  // shading's gradients, which no method avoids; the second is the receivers' crawl alone.
+  sweep.metrics = {{"crawl: flicker of the error against k = 1, mean", "u", 0.5}, {"crawl: flicker of the error against k = 1, p99", "u", 2.0},
+                   {"flicker F mean (no reference)", "u", 0.5}, {"flicker F p99 (no reference)", "u", 2.0}};
+  const render::FrameTables tables = sweep_tables(sweep_lighting(SweepLight::sky), 4, 8.0);
+  const std::vector<render::Sphere> spheres = character();
+  const int size = options.quick ? 64 : 128;
+  const int frames = options.quick ? 8 : 60;
+  std::vector<SweepCamera> cameras;
+  std::vector<SweepGBuffer> gbuffers;
+  for (int t = 0; t < frames; ++t) {
+    const float a = glm::radians(20.0f) * float(t) / float(frames - 1);
+    const float radius = 2.6f - 0.4f * float(t) / float(frames - 1);
+    SweepCamera camera;
+    camera.eye = glm::vec3(radius * std::sin(a), 1.3f, radius * std::cos(a));
+    camera.target = glm::vec3(0.0f, 0.4f, 0.0f);
+    cameras.push_back(camera);
+    gbuffers.push_back(trace_gbuffer(spheres, camera, size));
+  }
+  std::vector<Reprojection> to_frame;
+  for (int t = 0; t < frames; ++t) to_frame.push_back(reproject(gbuffers.front(), cameras[std::size_t(t)], gbuffers[std::size_t(t)]));
+  std::vector<ref::Plane> exact;  // k = 1
+  for (int k : {1, 2, 4, 8})
+    for (int u = 0; u < (k == 1 ? 1 : 2); ++u) {
+      std::vector<ref::Plane> images, errors;
+      for (int t = 0; t < frames; ++t) {
+        const SweepImage image = render_sweep_frame(tables, spheres, gbuffers[std::size_t(t)], k, kUpsamplers[u], kEpsilon);
+        count_image(sweep, image, gbuffers[std::size_t(t)]);
+        images.push_back(in_u(image));
+        if (k == 1) exact.push_back(images.back());
+        errors.push_back(images.back());
+        for (std::size_t i = 0; i < errors.back().values.size(); ++i) errors.back().values[i] -= exact[std::size_t(t)].values[i];
+      }
+      const FlickerSummary crawl = flicker(errors, to_frame);
+      const FlickerSummary f = flicker(images, to_frame);
+      const std::string method = k == 1 ? "k1" : kUpsamplerNames[u];
+      const std::string series = k == 1 ? std::string("every pixel") : method;
+      if (k > 1) {
+        add_point(sweep, method, series, k, 0, crawl.mean);
+        add_point(sweep, method, series, k, 1, crawl.p99);
+      }
+      add_point(sweep, method, series, k, 2, f.mean);
+      add_point(sweep, method, series, k, 3, f.p99);
+    }
+  sweep.notes.push_back("exact reprojection: each world point of frame 0 is projected into every frame and kept where the "
+                        "same surface is seen there (study::reproject); F at k = 1 is the floor of the metric itself");
+  return sweep;
+}
+
+}  // namespace
+
+SweepResult sweep_silhouettes(const StabilityOptions& options) { return timed(silhouettes, options); }
+SweepResult sweep_camera_crawl(const StabilityOptions& options) { return timed(camera_crawl, options); }
+
+}  // namespace proxygi::study

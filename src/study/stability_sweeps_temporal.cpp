@@ -1,0 +1,145 @@
+// S6 influence fade and S8 LOD switch: sequences of frames on a static receiver set (the exact
+// reprojection is the identity), scored with the temporal metrics.
+#include <algorithm>
+#include <cmath>
+
+#include "study/stability_sweep_parts.h"
+
+namespace proxygi::study {
+namespace {
+
+constexpr float kTau = 0.25f;
+const glm::vec3 kUp(0.0f, 1.0f, 0.0f);
+
+SweepResult influence_fade(const StabilityOptions& options) {
+  SweepResult sweep;
+  sweep.id = "S6";
+  sweep.title = "influence fade: a sphere (r = 0.1 m) approaches a ground receiver from 40r to 2r at 45 deg elevation (n = 4)";
+  sweep.x_label = "eta";
+  sweep.metrics = {{"entry step (per-frame change minus the truth's, distance >= 0.5 eta r)", "u", 1.0},
+                   {"missing shadow (distance >= 0.7 eta r)", "u", 1.0}};
+  const float r = 0.1f;
+  const int frames = options.quick ? 120 : 240;
+  const glm::vec3 direction = glm::normalize(glm::vec3(1.0f, 1.0f, 0.0f));
+  const std::vector<float> etas = options.quick ? std::vector<float>{5, 10, 15, 30} : std::vector<float>{5, 7.5f, 10, 15, 20, 25, 30};
+  for (SweepLight light : {SweepLight::sky, SweepLight::delta}) {
+    const sh::RgbSh lighting = sweep_lighting(light);
+    const std::string name = light == SweepLight::sky ? "sky" : "delta";
+    for (float eta : etas) {
+      const render::FrameTables tables = sweep_tables(lighting, 4, 8.0, eta);
+      const TruthIntegrator truth(tables, 16);
+      const double open = truth.unshadowed(glm::dvec3(kUp));
+      ref::Plane method(frames, 1), exact(frames, 1);
+      double missing = 0.0;
+      for (int t = 0; t < frames; ++t) {
+        const float distance = r * (40.0f - 38.0f * float(t) / float(frames - 1));
+        const render::Sphere sphere{direction * distance, r, glm::vec3(0.8f)};
+        const MethodShade shade = shade_method(tables, kTau, glm::vec3(0.0f), kUp, std::span(&sphere, 1));
+        count_output(sweep, shade);
+        // Both as blocked light from their own unshadowed shade.
+        method.values[std::size_t(t)] = float(shade.unshadowed - shade.value);
+        exact.values[std::size_t(t)] = float(open - truth.shadowed_one(glm::vec3(0.0f), kUp, sphere));
+        if (distance >= 0.7f * eta * r)
+          missing = std::max(missing, (exact.values[std::size_t(t)] - method.values[std::size_t(t)]) / (open * kDisplayStep));
+      }
+      // Frame-to-frame: the per-frame change against the truth's (temporal-gradient error along time).
+      double step = 0.0;
+      for (int t = 1; t < frames; ++t) {
+        // Around the influence boundary only (distance ≥ 0.5 η r): closer in, the change is the shadow's own.
+        if (r * (40.0f - 38.0f * float(t) / float(frames - 1)) < 0.5f * eta * r) break;
+        const ref::Plane x0(1, 1, method.values[std::size_t(t - 1)]), x1(1, 1, method.values[std::size_t(t)]);
+        const ref::Plane r0(1, 1, exact.values[std::size_t(t - 1)]), r1(1, 1, exact.values[std::size_t(t)]);
+        step = std::max(step, temporal_gradient_error(x0, x1, r0, r1, Reprojection::identity(1, 1)).max / (open * kDisplayStep));
+      }
+      add_point(sweep, "hyb", name + " light", eta, 0, step);
+      add_point(sweep, "hyb", name + " light", eta, 1, missing);
+    }
+  }
+  sweep.notes.push_back("the fade is over 4 table rows of s = sin(alpha) (about 1.5 % of s's range) below s = 1/eta");
+  return sweep;
+}
+
+// A "character" of 64 spheres (a 4 x 4 x 4 block) and its 8-sphere LOD (one sphere per 2 x 2 x 2
+// octant, radius 2r: the same volume up to packing).
+std::vector<render::Sphere> block(const glm::vec3& origin, bool coarse) {
+  const float r = 0.05f, spacing = 0.09f;
+  std::vector<render::Sphere> spheres;
+  if (!coarse) {
+    for (int i = 0; i < 64; ++i)
+      spheres.push_back({origin + spacing * (glm::vec3(float(i % 4), float(i / 4 % 4), float(i / 16)) - glm::vec3(1.5f)), r, glm::vec3(0.8f)});
+  } else {
+    for (int i = 0; i < 8; ++i)
+      spheres.push_back({origin + 2.0f * spacing * (glm::vec3(float(i % 2), float(i / 2 % 2), float(i / 4)) - glm::vec3(0.5f)), 2.0f * r,
+                         glm::vec3(0.8f)});
+  }
+  return spheres;
+}
+
+SweepResult lod_switch(const StabilityOptions& options) {
+  SweepResult sweep;
+  sweep.id = "S8";
+  sweep.title = "LOD switch: a 64-sphere block walks away over ground receivers, switched to 8 spheres (n = 4, sky)";
+  sweep.x_label = "cross-fade frames (0: hard switch)";
+  sweep.metrics = {{"pop |a_t(x) - a_t(r)| max", "u", 1.0}, {"pop mean over receivers and frames", "u", 1.0}};
+  const render::FrameTables tables = sweep_tables(sweep_lighting(SweepLight::sky), 4, 8.0);
+  const int frames = options.quick ? 48 : 120;
+  const int receivers = options.quick ? 41 : 121;
+  const int switch_frame = frames / 2;
+  // Receivers on the ground along the walk; the block walks 2 m along +x, 0.35 m up.
+  std::vector<glm::vec3> points;
+  for (int i = 0; i < receivers; ++i) points.push_back({-0.5f + 3.0f * float(i) / float(receivers - 1), 0.0f, 0.15f});
+  auto shade_frame = [&](int t, float fine_weight) {
+    const glm::vec3 origin(2.0f * float(t) / float(frames - 1), 0.35f, 0.0f);
+    const std::vector<render::Sphere> fine = block(origin, false), coarse = block(origin, true);
+    ref::Plane out(receivers, 1), open(receivers, 1);
+    for (int i = 0; i < receivers; ++i) {
+      const glm::vec3& p = points[std::size_t(i)];
+      std::vector<float> f = render::accumulate_log_occlusion(tables, p, kUp, fine);
+      const std::vector<float> g = render::accumulate_log_occlusion(tables, p, kUp, coarse);
+      // Log sums are linear: the cross-fade blends them (notes F12).
+      for (std::size_t j = 0; j < f.size(); ++j) f[j] = fine_weight * f[j] + (1.0f - fine_weight) * g[j];
+      const MethodShade shade = shade_log_sum(tables, kTau, f, p, kUp);
+      count_output(sweep, shade);
+      out.values[std::size_t(i)] = float(shade.value);
+      open.values[std::size_t(i)] = float(shade.unshadowed);
+    }
+    return std::pair{out, open};
+  };
+  std::vector<ref::Plane> reference;  // the fine set throughout: the pop is the switch's alone
+  ref::Plane open;
+  for (int t = 0; t < frames; ++t) {
+    auto [value, unshadowed] = shade_frame(t, 1.0f);
+    reference.push_back(value);
+    open = unshadowed;
+  }
+  const Reprojection same = Reprojection::identity(receivers, 1);
+  double u = 0.0;
+  for (float v : open.values) u += v * kDisplayStep / double(receivers);
+  for (int fade : {0, 1, 4, 16}) {
+    std::vector<ref::Plane> x;
+    for (int t = 0; t < frames; ++t) {
+      const float weight = fade == 0 ? (t < switch_frame ? 1.0f : 0.0f)
+                                     : std::clamp(1.0f - float(t - switch_frame + 1) / float(fade + 1), 0.0f, 1.0f);
+      x.push_back(shade_frame(t, weight).first);
+    }
+    double worst = 0.0, mean = 0.0;
+    for (int t = 1; t + 1 < frames; ++t) {
+      const ref::Plane xs[3] = {x[std::size_t(t - 1)], x[std::size_t(t)], x[std::size_t(t + 1)]};
+      const ref::Plane rs[3] = {reference[std::size_t(t - 1)], reference[std::size_t(t)], reference[std::size_t(t + 1)]};
+      const ErrorSummary pop = pop_error(std::span<const ref::Plane, 3>(xs, 3), std::span<const ref::Plane, 3>(rs, 3), same, same);
+      worst = std::max(worst, pop.max / u);
+      mean += pop.mean / u / double(frames - 2);
+    }
+    const std::string method = fade == 0 ? "hard" : "fade" + std::to_string(fade);
+    add_point(sweep, method, "64 -> 8 spheres", fade, 0, worst);
+    add_point(sweep, method, "64 -> 8 spheres", fade, 1, mean);
+  }
+  return sweep;
+}
+
+}  // namespace
+
+SweepResult sweep_influence_fade(const StabilityOptions& options) { return timed(influence_fade, options); }
+SweepResult sweep_lod_switch(const StabilityOptions& options) { return timed(lod_switch, options); }
+
+}  // namespace proxygi::study

@@ -1,0 +1,170 @@
+// The stability sweeps' generators and exact answers on cases with known results, and the quick
+// sweeps' outputs: never negative, never above unshadowed + 1u, never NaN or Inf.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "sh/basis.h"
+#include "sh/occlusion_tables.h"
+#include "sh/rotation.h"
+#include "study/stability_frame.h"
+#include "study/stability_shading.h"
+#include "study/stability_sweeps.h"
+
+namespace proxygi::study {
+namespace {
+
+const glm::vec3 kUp(0.0f, 1.0f, 0.0f);
+
+TEST(StabilityTruth, NoBlockerMeansFullVisibilityAndTheUnshadowedShade) {
+  const render::FrameTables tables = sweep_tables(sweep_lighting(SweepLight::sky), 4, 8.0);
+  const TruthIntegrator truth(tables, 32);
+  // V = 1 projects to (√4π, 0, ...): the quadrature integrates y_0 and y_i exactly.
+  const std::vector<double> v = truth.visibility_sh(glm::dvec3(0.0), {});
+  EXPECT_NEAR(v[0], 3.5449077018110318, 1e-9);
+  for (std::size_t i = 1; i < v.size(); ++i) EXPECT_NEAR(v[i], 0.0, 1e-9) << i;
+  EXPECT_DOUBLE_EQ(truth.shadowed(glm::dvec3(0.0), glm::dvec3(kUp), {}), truth.unshadowed(glm::dvec3(kUp)));
+  // The frame with no sphere: exp(0) = 1 exactly, so E is the unshadowed shade, unclamped.
+  const MethodShade open = shade_method(tables, 0.25f, glm::vec3(0.0f), kUp, {});
+  EXPECT_DOUBLE_EQ(open.value, open.unshadowed);
+  EXPECT_NEAR(open.unclamped, open.unshadowed, 1e-5 * open.unshadowed);
+}
+
+TEST(StabilityTruth, ReceiverInsideASphereSeesNothing) {
+  const render::FrameTables tables = sweep_tables(sweep_lighting(SweepLight::sky), 4, 8.0);
+  const TruthIntegrator truth(tables, 16);
+  const render::Sphere sphere{{0.0f, 0.1f, 0.0f}, 0.25f, glm::vec3(0.8f)};
+  EXPECT_EQ(truth.shadowed_one(glm::dvec3(0.0), glm::dvec3(kUp), sphere), 0.0);
+  EXPECT_EQ(truth.shadowed(glm::dvec3(0.0), glm::dvec3(kUp), std::span(&sphere, 1)), 0.0);
+}
+
+TEST(StabilityTruth, CapQuadratureAgreesWithRayTestedQuadratureForOneSphere) {
+  // A sphere of half-angle 30° straight above the receiver: the precise cap quadrature and the
+  // ray-tested product rule estimate the same integral; the product rule's error is its grid's
+  // (0.7° spacing at 256 nodes: a ring of partial cells on the cap's rim, under 0.2 % of E).
+  const render::FrameTables tables = sweep_tables(sweep_lighting(SweepLight::sky), 4, 8.0);
+  const TruthIntegrator truth(tables, 256);
+  const render::Sphere sphere{{0.0f, 1.0f, 0.0f}, 0.5f, glm::vec3(0.8f)};
+  const double open = truth.unshadowed(glm::dvec3(kUp));
+  const double cap = truth.shadowed_one(glm::dvec3(0.0), glm::dvec3(kUp), sphere);
+  const double rays = truth.shadowed(glm::dvec3(0.0), glm::dvec3(kUp), std::span(&sphere, 1));
+  EXPECT_LT(cap, 0.9 * open);  // a real shadow
+  EXPECT_NEAR(rays, cap, 2e-3 * open);
+}
+
+TEST(StabilityShading, ProductSpaceOfOneSphereIsItsOcclusionVector) {
+  const render::FrameTables tables = sweep_tables(sweep_lighting(SweepLight::sky), 4, 8.0);
+  const render::Sphere sphere{{0.3f, 1.0f, 0.0f}, 0.4f, glm::vec3(0.8f)};
+  const std::vector<float> product = product_space_visibility(tables, glm::vec3(0.0f), kUp, std::span(&sphere, 1));
+  // 1 * O = O: the rotated closed-form occlusion of the sphere's cap.
+  const glm::dvec3 offset(sphere.center);
+  std::vector<double> expected(16);
+  sh::rotate_zonal(4, sh::occlusion_zonal(4, 0.4 / glm::length(offset)), glm::normalize(offset), expected);
+  for (std::size_t i = 0; i < 16; ++i) EXPECT_NEAR(product[i], expected[i], 2e-6) << i;
+}
+
+TEST(StabilityShading, DeltaLightIsTheOrderSixProjectionOfThePoint) {
+  // L_i = I y_i(d): toward d, Σ_l (2l+1)/4π I = 36 I/4π; away, Σ_l (−1)^l (2l+1)/4π I = −6 I/4π
+  // (addition theorem, order 6), I = the sun's radiance × its disc's solid angle.
+  const sh::AnalyticSky sky;
+  const sh::RgbSh light = sweep_lighting(SweepLight::delta);
+  const double power = sky.sun_radiance.g * 2.0 * sh::kPi * (1.0 - std::cos(sky.sun_radius_radians));
+  EXPECT_NEAR(sh::evaluate_expansion(6, light.channels[1], sky.sun_direction), 36.0 * power / (4.0 * sh::kPi), 1e-9);
+  EXPECT_NEAR(sh::evaluate_expansion(6, light.channels[1], -sky.sun_direction), -6.0 * power / (4.0 * sh::kPi), 1e-9);
+}
+
+TEST(StabilitySweeps, UnknownSweepNamesTheKnownOnes) {
+  auto result = run_stability_sweep("S99", {});
+  ASSERT_FALSE(result);
+  EXPECT_NE(result.message().find("S99"), std::string::npos);
+  EXPECT_NE(result.message().find("S10"), std::string::npos);
+}
+
+// Every quick sweep on the frame's twins: each metric has points, every value is finite, and the
+// frame's output stays in bounds (no negative, nothing above unshadowed + 1u, no NaN/Inf).
+class QuickSweep : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(QuickSweep, OutputsStayInBoundsAndEveryMetricIsMeasured) {
+  StabilityOptions options;
+  options.quick = true;
+  auto sweep = run_stability_sweep(GetParam(), options);
+  ASSERT_TRUE(sweep) << sweep.message();
+  ASSERT_FALSE(sweep->metrics.empty());
+  for (std::size_t m = 0; m < sweep->metrics.size(); ++m) {
+    std::size_t points = 0;
+    for (const SweepPoint& p : sweep->points)
+      if (p.metric == int(m)) {
+        ++points;
+        EXPECT_TRUE(std::isfinite(p.value)) << p.series << " x=" << p.x;
+      }
+    EXPECT_GT(points, 0u) << sweep->metrics[m].name;
+  }
+  const BoundsCounts& b = sweep->bounds;
+  EXPECT_GT(b.pixels, 0u);
+  EXPECT_EQ(b.negative, 0u);
+  EXPECT_EQ(b.over_unshadowed, 0u);
+  EXPECT_EQ(b.non_finite, 0u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Stability, QuickSweep, ::testing::Values("S1", "S2", "S3", "S4", "S5", "S6", "S7", "S8"));
+
+}  // namespace
+}  // namespace proxygi::study
+
+namespace proxygi::study {
+namespace {
+
+TEST(StabilityFrame, SeesTheCharacterFromFarAndUpsamplingChangesItsEdges) {
+  const render::FrameTables tables = sweep_tables(sweep_lighting(SweepLight::sky), 4, 8.0);
+  const std::vector<render::Sphere> spheres = {{{0.0f, 0.25f, 0.0f}, 0.25f, glm::vec3(0.8f)}};
+  for (float distance : {1.0f, 16.0f}) {
+    SweepCamera camera;
+    camera.eye = glm::vec3(0.0f, 0.5f, 0.0f) + distance * glm::vec3(1.2f, 0.9f, 2.2f);
+    camera.target = glm::vec3(0.0f, 0.45f, 0.0f);
+    camera.fov_y_degrees = 40.0f / distance;
+    const SweepGBuffer g = trace_gbuffer(spheres, camera, 64);
+    std::size_t sphere_pixels = 0, ground_pixels = 0;
+    for (int label : g.label) sphere_pixels += label == 1, ground_pixels += label == 0;
+    EXPECT_GT(sphere_pixels, 100u) << distance;
+    EXPECT_GT(ground_pixels, 100u) << distance;
+    const SweepImage full = render_sweep_frame(tables, spheres, g, 1, settings::Upsampling::bilinear, 0.01f);
+    const SweepImage coarse = render_sweep_frame(tables, spheres, g, 4, settings::Upsampling::bilinear, 0.01f);
+    EXPECT_GT(absolute_error(coarse.shade, full.shade).max, 0.0) << distance;
+  }
+}
+
+}  // namespace
+}  // namespace proxygi::study
+
+namespace proxygi::study {
+namespace {
+
+// F7 and F10 measured under 1u (README "Where each method fails"): these keep them there.
+TEST(StabilityContinuity, HybSwitchJumpsStayUnderOneDisplayStep) {
+  StabilityOptions options;
+  options.quick = true;
+  const SweepResult sweep = sweep_large_caps(options);
+  std::size_t switches = 0;
+  for (const SweepPoint& p : sweep.points)
+    if (sweep.metrics[std::size_t(p.metric)].name == "HYB switch jump") {
+      ++switches;
+      EXPECT_LE(p.value, 1.0) << p.series << " at |f| = " << p.x;
+    }
+  EXPECT_EQ(switches, 20u);  // orders 3..6 x squarings 0..4
+}
+
+TEST(StabilityContinuity, InfluenceFadeStepStaysUnderOneDisplayStepAtTheDefaultEta) {
+  StabilityOptions options;
+  options.quick = true;
+  const SweepResult sweep = sweep_influence_fade(options);
+  std::size_t checked = 0;
+  for (const SweepPoint& p : sweep.points)
+    if (p.metric == 0 && p.x == double(settings::RenderSettings{}.shadow_eta)) {
+      ++checked;
+      EXPECT_LE(p.value, 1.0) << p.series;
+    }
+  EXPECT_EQ(checked, 2u);  // sky and delta light
+}
+
+}  // namespace
+}  // namespace proxygi::study
