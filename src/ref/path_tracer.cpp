@@ -35,6 +35,7 @@ PathSample PathTracer::shade(const SurfaceHit& first, SampleStream& random) cons
   glm::vec3 throughput(1.0f);
   for (int bounce = 0;; ++bounce) {
     const glm::vec3& n = vertex.shading_normal;
+    if (bounce > 0 && vertex.character && !settings_.character_senders) vertex.albedo = glm::vec3(0.0f);
     const glm::vec3 f = vertex.albedo * (1.0f / kPi);
     glm::vec3 contribution(0.0f);
 
