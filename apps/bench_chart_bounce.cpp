@@ -36,7 +36,7 @@ top.set_yscale("log")
 top.set_ylabel("bounce relative MSE (none = 1)")
 top.grid(True, which="both", alpha=0.3)
 top.legend(fontsize=8, ncol=2)
-top.set_title("Bounce alone: sum (x - r)^2 / sum r^2 over pixels with a significant reference bounce")
+top.set_title("Bounce alone: sum (x - r)^2 / sum r^2\nover the pixels with a significant reference bounce", fontsize=10)
 bottom.set_ylabel("ms per frame")
 bottom.grid(True, alpha=0.3)
 bottom.set_xticks(x)
@@ -63,8 +63,8 @@ Status write_bounce_report(const std::string& folder, const std::vector<study::B
               "`render.indirect_method none` (default SH order, receiver scale and upsampling). bounce relMSE = "
               "sum (x - r)^2 / sum r^2 over the receivers whose reference bounce is at least "
            << 100.0 * study::kSignificantBounce
-           << " % of their radiance (none scores 1); character / contact / ground: the same inside those regions "
-              "(contact: ground within "
+           << " % of their radiance (none scores 1); character / contact / ground / other: the same over the whole region (other: "
+              "receivers neither character nor ground, e.g. the wall; contact: ground within "
            << study::kContactRadiusM << " m of a character). Brightness: sum of the row's bounce luminance over the "
               "reference's. image relMSE: the main chart's whole-image error.\n";
   markdown << study::to_bounce_markdown(rows);

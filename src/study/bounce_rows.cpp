@@ -26,14 +26,15 @@ std::string cell(double value, const char* format) {
 std::string to_bounce_csv(const std::vector<BounceRow>& rows) {
   std::ostringstream text;
   text << "scene,indirect,ms_per_frame,relative_mse,character_relative_mse";
-  for (const char* region : {"significant", "character", "contact", "ground"})
+  for (const char* region : {"significant", "character", "contact", "ground", "other"})
     text << ",bounce_" << region << "_relative_mse,bounce_" << region << "_luminance_ratio,bounce_" << region << "_pixels";
   text << "\n";
   char line[96];
   for (const BounceRow& r : rows) {
     std::snprintf(line, sizeof line, "%.4f,%.6g,%.6g", r.row.milliseconds, r.row.relative_mse, r.row.character_relative_mse);
     text << r.row.scene << ',' << r.row.indirect << ',' << line;
-    for (const BounceError* e : {&r.bounce.significant, &r.bounce.character, &r.bounce.contact, &r.bounce.ground}) {
+    for (const BounceError* e :
+         {&r.bounce.significant, &r.bounce.character, &r.bounce.contact, &r.bounce.ground, &r.bounce.other}) {
       std::snprintf(line, sizeof line, ",%.6g,%.6g,%zu", e->relative_mse, e->luminance_ratio, e->pixels);
       text << line;
     }
@@ -55,13 +56,14 @@ std::string to_bounce_markdown(const std::vector<BounceRow>& rows) {
     });
     const std::size_t pixels = selected.empty() ? 0 : selected.front()->bounce.significant.pixels;
     text << "\n### " << scene << " (" << pixels << " pixels with a significant bounce)\n\n"
-         << "| indirect | ms/frame | bounce relMSE | bounce brightness | character | contact | ground | image relMSE | character image relMSE |\n"
-         << "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+         << "| indirect | ms/frame | bounce relMSE | bounce brightness | character | contact | ground | other | image relMSE | character image relMSE |\n"
+         << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const BounceRow* r : selected)
       text << "| " << r->row.indirect << " | " << cell(r->row.milliseconds, "%.2f") << " | "
            << cell(r->bounce.significant.relative_mse, "%.3f") << " | " << cell(r->bounce.significant.luminance_ratio, "%.2f")
            << " | " << cell(r->bounce.character.relative_mse, "%.3f") << " | " << cell(r->bounce.contact.relative_mse, "%.3f")
-           << " | " << cell(r->bounce.ground.relative_mse, "%.3f") << " | " << cell(r->row.relative_mse, "%.4g") << " | "
+           << " | " << cell(r->bounce.ground.relative_mse, "%.3f") << " | " << cell(r->bounce.other.relative_mse, "%.3f")
+           << " | " << cell(r->row.relative_mse, "%.4g") << " | "
            << cell(r->row.character_relative_mse, "%.4g") << " |\n";
   }
   return text.str();

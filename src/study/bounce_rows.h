@@ -16,7 +16,7 @@ struct BounceRow {
 };
 
 // One line per row: scene, indirect, ms, whole-image and character relMSE, then per region
-// (significant, character, contact, ground) bounce relMSE, luminance ratio and pixels; -1 = empty.
+// (significant, character, contact, ground, other) bounce relMSE, luminance ratio and pixels; -1 = empty.
 std::string to_bounce_csv(const std::vector<BounceRow>& rows);
 // One table per scene (in first-seen order), rows by bounce relMSE; empty regions print "–".
 std::string to_bounce_markdown(const std::vector<BounceRow>& rows);

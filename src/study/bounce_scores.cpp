@@ -13,9 +13,11 @@ Status same_size(const image::ImageF& a, const image::ImageF& b) {
                     std::to_string(b.width) + "x" + std::to_string(b.height));
 }
 
-ref::ReceiverMask intersect(const ref::ReceiverMask& a, const ref::ReceiverMask& b) {
-  ref::ReceiverMask out = a;
-  for (std::size_t i = 0; i < out.receiver.size(); ++i) out.receiver[i] = a.receiver[i] != 0 && b.receiver[i] != 0;
+// Receivers of `all` in neither `a` nor `b`.
+ref::ReceiverMask remainder(const ref::ReceiverMask& all, const ref::ReceiverMask& a, const ref::ReceiverMask& b) {
+  ref::ReceiverMask out = all;
+  for (std::size_t i = 0; i < out.receiver.size(); ++i)
+    out.receiver[i] = all.receiver[i] != 0 && a.receiver[i] == 0 && b.receiver[i] == 0;
   return out;
 }
 
@@ -64,9 +66,10 @@ Result<BounceReference> make_bounce_reference(const FrameReference& full, const 
   BounceReference out;
   out.bounce = std::move(*bounce);
   out.significant = significant_bounce(out.bounce, full.radiance, full.receivers);
-  out.character = intersect(out.significant, full.character);
-  out.contact = intersect(out.significant, full.contact);
-  out.ground = intersect(out.significant, full.ground);
+  out.character = full.character;
+  out.contact = full.contact;
+  out.ground = full.ground;
+  out.other = remainder(full.receivers, full.character, full.ground);
   return out;
 }
 
@@ -96,7 +99,8 @@ Result<BounceScores> score_bounce(const image::ImageF& test_bounce, const Bounce
   const std::pair<BounceError*, const ref::ReceiverMask*> parts[] = {{&out.significant, &reference.significant},
                                                                      {&out.character, &reference.character},
                                                                      {&out.contact, &reference.contact},
-                                                                     {&out.ground, &reference.ground}};
+                                                                     {&out.ground, &reference.ground},
+                                                                     {&out.other, &reference.other}};
   for (const auto& [error, mask] : parts) {
     auto scored = bounce_error(test_bounce, reference.bounce, *mask);
     if (!scored) return scored.error();
@@ -107,17 +111,19 @@ Result<BounceScores> score_bounce(const image::ImageF& test_bounce, const Bounce
 
 BounceScores mean_bounce_scores(const std::vector<BounceScores>& frames) {
   BounceScores mean;
-  int counts[4] = {0, 0, 0, 0};
+  int counts[5] = {0, 0, 0, 0, 0};
   for (const BounceScores& frame : frames) {
     accumulate(mean.significant, counts[0], frame.significant);
     accumulate(mean.character, counts[1], frame.character);
     accumulate(mean.contact, counts[2], frame.contact);
     accumulate(mean.ground, counts[3], frame.ground);
+    accumulate(mean.other, counts[4], frame.other);
   }
   finish(mean.significant, counts[0]);
   finish(mean.character, counts[1]);
   finish(mean.contact, counts[2]);
   finish(mean.ground, counts[3]);
+  finish(mean.other, counts[4]);
   return mean;
 }
 

@@ -10,8 +10,10 @@
 //
 // Error: over a mask, sum_{p, c} (x - r)^2 / sum_{p, c} r^2 (an MSE relative to the reference
 // bounce's own mean square): 0 is exact, and "none" (x = 0) scores exactly 1, so a method below 1
-// adds more right than wrong. Scored only where the bounce is significant (kSignificantBounce of
-// the pixel's reference radiance), and per region (character, contact, ground) inside that.
+// adds more right than wrong. Scored where the bounce is significant (kSignificantBounce of the
+// pixel's reference radiance), and over each whole region (character, contact, ground, other:
+// the remaining receivers, e.g. a wall), where the bounce is a small part of the light but its
+// spread matters; there the reference's noise bounds how far below 1 a method can score.
 #include <cstddef>
 #include <vector>
 
@@ -29,9 +31,10 @@ inline constexpr double kSignificantBounce = 0.02;
 struct BounceReference {
   image::ImageF bounce;            // with - without character senders, linear RGB, alpha 1
   ref::ReceiverMask significant;   // receivers with a significant reference bounce
-  ref::ReceiverMask character;     // significant ∩ FrameReference::character
-  ref::ReceiverMask contact;       // significant ∩ FrameReference::contact
-  ref::ReceiverMask ground;        // significant ∩ FrameReference::ground
+  ref::ReceiverMask character;     // FrameReference::character
+  ref::ReceiverMask contact;       // FrameReference::contact
+  ref::ReceiverMask ground;        // FrameReference::ground
+  ref::ReceiverMask other;         // receivers in none of character and ground (static meshes)
 };
 
 // with - without per RGB channel, alpha 1. Fails when the sizes differ.
@@ -57,6 +60,7 @@ struct BounceScores {
   BounceError character;
   BounceError contact;
   BounceError ground;
+  BounceError other;
 };
 Result<BounceScores> score_bounce(const image::ImageF& test_bounce, const BounceReference& reference);
 

@@ -60,26 +60,29 @@ TEST(BounceScores, SignificantWhereTheBounceIsAFairShareOfThePixel) {
   EXPECT_EQ(significant.receiver, (std::vector<std::uint8_t>{0, 1, 0, 0}));
 }
 
-TEST(BounceScores, ReferenceRegionsLieInsideTheSignificantPixels) {
+TEST(BounceScores, ReferenceBounceIsSignificantWhereAFairShareAndScoredPerRegion) {
   FrameReference full, without;
-  full.radiance = row_image({{1, 1, 1}, {1, 1, 1}, {1, 1, 1}});
-  without.radiance = row_image({{0.5f, 0.5f, 0.5f}, {1, 1, 1}, {0.9f, 0.9f, 0.9f}});
-  full.receivers = row_mask({1, 1, 1});
-  full.character = row_mask({1, 0, 0});
-  full.ground = row_mask({0, 1, 1});
-  full.contact = row_mask({0, 1, 0});
+  full.radiance = row_image({{1, 1, 1}, {1, 1, 1}, {1, 1, 1}, {1, 1, 1}});
+  without.radiance = row_image({{0.5f, 0.5f, 0.5f}, {1, 1, 1}, {0.9f, 0.9f, 0.9f}, {0.99f, 0.99f, 0.99f}});
+  full.receivers = row_mask({1, 1, 1, 1});
+  full.character = row_mask({1, 0, 0, 0});
+  full.ground = row_mask({0, 1, 1, 0});
+  full.contact = row_mask({0, 1, 0, 0});
   full.samples = without.samples = 16;
   auto reference = make_bounce_reference(full, without);
   ASSERT_TRUE(reference.ok()) << reference.message();
-  EXPECT_EQ(reference->significant.receiver, (std::vector<std::uint8_t>{1, 0, 1}));
-  EXPECT_EQ(reference->character.receiver, (std::vector<std::uint8_t>{1, 0, 0}));
-  EXPECT_EQ(reference->contact.receiver, (std::vector<std::uint8_t>{0, 0, 0}));
-  EXPECT_EQ(reference->ground.receiver, (std::vector<std::uint8_t>{0, 0, 1}));
-  auto scores = score_bounce(row_image({{0.5f, 0.5f, 0.5f}, {0, 0, 0}, {0, 0, 0}}), *reference);
+  // Bounces 0.5, 0, 0.1, 0.01: significant from 2 % of the radiance on.
+  EXPECT_EQ(reference->significant.receiver, (std::vector<std::uint8_t>{1, 0, 1, 0}));
+  EXPECT_EQ(reference->ground.receiver, (std::vector<std::uint8_t>{0, 1, 1, 0}));
+  EXPECT_EQ(reference->other.receiver, (std::vector<std::uint8_t>{0, 0, 0, 1}));  // neither character nor ground
+  auto scores = score_bounce(row_image({{0.5f, 0.5f, 0.5f}, {0, 0, 0}, {0, 0, 0}, {0.02f, 0.02f, 0.02f}}), *reference);
   ASSERT_TRUE(scores.ok());
   EXPECT_NEAR(scores->significant.relative_mse, 3 * 0.01 / (3 * 0.25 + 3 * 0.01), 1e-6);  // only pixel 2 wrong
   EXPECT_NEAR(scores->character.relative_mse, 0.0, 1e-12);
-  EXPECT_EQ(scores->contact.relative_mse, -1.0);
+  EXPECT_NEAR(scores->ground.relative_mse, 1.0, 1e-6);    // pixel 1 has no bounce to miss, pixel 2 misses all
+  EXPECT_EQ(scores->contact.relative_mse, -1.0);          // the contact pixel's reference bounce is 0
+  EXPECT_NEAR(scores->other.relative_mse, 1.0, 1e-5);     // twice the bounce: (0.02 - 0.01)^2 / 0.01^2
+  EXPECT_NEAR(scores->other.luminance_ratio, 2.0, 1e-5);
   without.samples = 8;
   EXPECT_FALSE(make_bounce_reference(full, without).ok());  // different samples: noise would not cancel
 }
