@@ -64,7 +64,7 @@ Status write_bounce_report(const std::string& folder, const std::vector<study::B
               "sum (x - r)^2 / sum r^2 over the receivers whose reference bounce is at least "
            << 100.0 * study::kSignificantBounce
            << " % of their radiance (none scores 1); character / contact / ground / other: the same over the whole region (other: "
-              "receivers neither character nor ground, e.g. the wall; contact: ground within "
+              "what the pixel centre sees is neither a character nor the ground, e.g. the wall; contact: ground within "
            << study::kContactRadiusM << " m of a character). Brightness: sum of the row's bounce luminance over the "
               "reference's. image relMSE: the main chart's whole-image error.\n";
   markdown << study::to_bounce_markdown(rows);

@@ -13,14 +13,6 @@ Status same_size(const image::ImageF& a, const image::ImageF& b) {
                     std::to_string(b.width) + "x" + std::to_string(b.height));
 }
 
-// Receivers of `all` in neither `a` nor `b`.
-ref::ReceiverMask remainder(const ref::ReceiverMask& all, const ref::ReceiverMask& a, const ref::ReceiverMask& b) {
-  ref::ReceiverMask out = all;
-  for (std::size_t i = 0; i < out.receiver.size(); ++i)
-    out.receiver[i] = all.receiver[i] != 0 && a.receiver[i] == 0 && b.receiver[i] == 0;
-  return out;
-}
-
 void accumulate(BounceError& sum, int& count, const BounceError& frame) {
   if (frame.relative_mse < 0.0) return;
   if (count == 0) sum = {0.0, 0.0, 0};
@@ -69,7 +61,7 @@ Result<BounceReference> make_bounce_reference(const FrameReference& full, const 
   out.character = full.character;
   out.contact = full.contact;
   out.ground = full.ground;
-  out.other = remainder(full.receivers, full.character, full.ground);
+  out.other = full.other;
   return out;
 }
 

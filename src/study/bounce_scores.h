@@ -34,7 +34,7 @@ struct BounceReference {
   ref::ReceiverMask character;     // FrameReference::character
   ref::ReceiverMask contact;       // FrameReference::contact
   ref::ReceiverMask ground;        // FrameReference::ground
-  ref::ReceiverMask other;         // receivers in none of character and ground (static meshes)
+  ref::ReceiverMask other;         // FrameReference::other (static meshes: the wall)
 };
 
 // with - without per RGB channel, alpha 1. Fails when the sizes differ.

@@ -60,15 +60,19 @@ int FrameTracer::width() const { return state_->sources->scene.output.width; }
 int FrameTracer::height() const { return state_->sources->scene.output.height; }
 bool FrameTracer::character_senders() const { return state_->character_senders; }
 
-void FrameTracer::region_masks(ref::ReceiverMask& ground, ref::ReceiverMask& contact) const {
+void FrameTracer::region_masks(ref::ReceiverMask& ground, ref::ReceiverMask& contact, ref::ReceiverMask& other) const {
   const int w = width(), h = height();
-  ground = contact = ref::mask_where(w, h, [](int, int) { return false; });
+  ground = contact = other = ref::mask_where(w, h, [](int, int) { return false; });
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const scene::Ray ray = scene::ray_through_pixel(state_->camera, w, h, float(x) + 0.5f, float(y) + 0.5f);
       const std::optional<ref::SurfaceHit> hit = state_->geometry->intersect(ray.origin, ray.direction);
-      if (!hit || hit->character || std::abs(hit->position.y) > 1e-3f || hit->geometric_normal.y < 0.99f) continue;
+      if (!hit || hit->character) continue;
       const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);
+      if (std::abs(hit->position.y) > 1e-3f || hit->geometric_normal.y < 0.99f) {
+        other.receiver[i] = 1;
+        continue;
+      }
       ground.receiver[i] = 1;
       if (state_->character_vertices.near(hit->position, kContactRadiusM)) contact.receiver[i] = 1;
     }
@@ -213,7 +217,7 @@ Result<FrameReference> load_or_render_reference(const ChartScene& chart, int fra
   reference.radiance = images.radiance;
   reference.receivers = ref::mask_from_image(reference.features.mask);
   reference.character = ref::mask_from_image(reference.features.character);
-  tracer.region_masks(reference.ground, reference.contact);
+  tracer.region_masks(reference.ground, reference.contact, reference.other);
   reference.samples = record.samples;
   reference.trace_seconds = record.seconds;
   return reference;

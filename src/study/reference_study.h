@@ -50,6 +50,7 @@ struct FrameReference {
   ref::ReceiverMask character; // pixels the center ray hits a character in (the "character" region)
   ref::ReceiverMask ground;    // pixels the center ray hits the ground plane (y = 0) in
   ref::ReceiverMask contact;   // ground pixels within kContactRadiusM of a character's vertex
+  ref::ReceiverMask other;     // pixels the center ray hits neither a character nor the ground in (a wall)
   std::uint32_t samples = 0;
   double trace_seconds = 0.0;  // all runs together
 };
@@ -90,8 +91,8 @@ class FrameTracer {
   Result<ref::SampleSums> trace(int spp, std::uint32_t seed, std::uint32_t first_sample, ref::RenderStats* stats,
                                 bool progress, ref::Sampler sampler = ref::Sampler::sobol) const;
   ref::PixelFeatures features() const;
-  // The ground and contact regions of FrameReference (pixel-center rays, as the character region).
-  void region_masks(ref::ReceiverMask& ground, ref::ReceiverMask& contact) const;
+  // The ground, contact and other regions of FrameReference (pixel-center rays, as the character region).
+  void region_masks(ref::ReceiverMask& ground, ref::ReceiverMask& contact, ref::ReceiverMask& other) const;
   bool character_senders() const;
   int width() const;
   int height() const;
