@@ -46,6 +46,7 @@ struct ChartArgs {
   std::vector<std::string> merge;
   std::string timings_from;
   std::string device;
+  bool unshadowed_senders = false;
 };
 
 // Path-tracing rows of one scene: per (samples, guided) the mean over its frames.
@@ -141,6 +142,7 @@ int run_bench_chart(const ChartArgs& args) {
   reference_options.cache_dir = args.cache;
   reference_options.assets_dir = assets_dir();
   reference_options.guided_radius = std::max(2, args.size / 24);
+  reference_options.unshadowed_senders = args.unshadowed_senders;
   const bool terminal = isatty(fileno(stderr)) != 0;
   reference_options.progress = !args.json && !quiet() && terminal;  // the tracer's progress is one \r line
   const std::vector<int> sample_counts = args.quick ? std::vector<int>{1, 4} : std::vector<int>{1, 4, 16, 64};
@@ -175,7 +177,7 @@ int run_bench_chart(const ChartArgs& args) {
     auto sources = study::load_scene_sources(chart, reference_options);
     if (!sources) return fail_runtime("bench chart: " + chart.name + ": " + sources.message());
     for (int frame : chart.frames) {
-      auto tracer = study::FrameTracer::create(*sources, frame);
+      auto tracer = study::FrameTracer::create(*sources, frame, true, reference_options.unshadowed_senders);
       if (!tracer) return fail_runtime("bench chart: " + chart.name + ": " + tracer.message());
       auto reference = study::load_or_render_reference(chart, frame, **tracer, reference_options);
       if (!reference) return fail_runtime("bench chart: " + chart.name + " reference: " + reference.message());
@@ -227,6 +229,7 @@ int run_bench_chart(const ChartArgs& args) {
   report.timing_frames = args.timing_frames;
   report.reference_spp = args.reference_spp;
   report.lighting = args.lighting == "full" ? "full environment" : "environment band-limited to SH order 6";
+  if (args.unshadowed_senders) report.lighting += ", characters lit without shadows where they reflect light";
   for (const study::ChartScene& chart : *scenes) report.scenes.push_back(chart.name);
   if (!args.shard.empty()) {
     const ChartShard measured{report, args.quick, shard, units, std::move(rows)};
@@ -271,6 +274,9 @@ void add_bench_chart_command(CLI::App& bench, CommandRunner& runner) {
   command->add_option("--lighting", args->lighting, "Reference lighting: sh (order 6) or full")
       ->check(CLI::IsMember({"sh", "full"}))
       ->capture_default_str();
+  command->add_flag("--unshadowed-senders", args->unshadowed_senders,
+                    "References light the characters without shadows where they reflect light (the bounce methods' "
+                    "assumption; not physical)");
   command->add_flag("--quick", args->quick, "A small grid (default setting and each baseline), 1 and 4 spp");
   command->add_flag("--references-only", args->references_only, "Only render (or complete) the cached references");
   command->add_option("--shard", args->shard, "I/N: measure only the I-th (0-based) of N contiguous runs of the chart's "

@@ -44,6 +44,10 @@ struct PathTracerSettings {
   // 0 there; primary hits keep theirs). The random stream is consumed the same, so with the same
   // seed the difference to a `true` render is exactly the light the characters bounce.
   bool character_senders = true;
+  // true: a character reached after the first vertex is lit without shadows (its light samples
+  // and BSDF ray count as unoccluded), as the bounce methods light their senders (the VPLs' and
+  // proxies' unshadowed irradiance): a reference for their assumption, not a physical one.
+  bool unshadowed_character_senders = false;
 };
 
 struct PathSample {

@@ -52,6 +52,7 @@ struct FrameTracer::State {
   scene::CameraState camera;
   VertexGrid character_vertices;
   bool character_senders = true;
+  bool unshadowed_senders = false;
 };
 
 FrameTracer::FrameTracer(std::unique_ptr<State> state) : state_(std::move(state)) {}
@@ -59,6 +60,7 @@ FrameTracer::~FrameTracer() = default;
 int FrameTracer::width() const { return state_->sources->scene.output.width; }
 int FrameTracer::height() const { return state_->sources->scene.output.height; }
 bool FrameTracer::character_senders() const { return state_->character_senders; }
+bool FrameTracer::unshadowed_senders() const { return state_->unshadowed_senders; }
 
 void FrameTracer::region_masks(ref::ReceiverMask& ground, ref::ReceiverMask& contact, ref::ReceiverMask& other) const {
   const int w = width(), h = height();
@@ -94,10 +96,12 @@ Result<SceneSources> load_scene_sources(const ChartScene& chart, const Reference
   return sources;
 }
 
-Result<std::unique_ptr<FrameTracer>> FrameTracer::create(const SceneSources& sources, int frame, bool character_senders) {
+Result<std::unique_ptr<FrameTracer>> FrameTracer::create(const SceneSources& sources, int frame, bool character_senders,
+                                                          bool unshadowed_senders) {
   auto state = std::make_unique<State>();
   state->sources = &sources;
   state->character_senders = character_senders;
+  state->unshadowed_senders = unshadowed_senders && character_senders;  // black senders: no difference
   const double time_s = scene::frame_time_s(sources.scene.output, frame);
   world::WorldState world_state;
   if (Status evaluated = sources.world->evaluate(time_s, std::nullopt, world_state); !evaluated) return evaluated.error();
@@ -112,6 +116,7 @@ Result<std::unique_ptr<FrameTracer>> FrameTracer::create(const SceneSources& sou
   ref::PathTracerSettings settings;
   settings.transport = ref::LightTransport::one_bounce;
   settings.character_senders = character_senders;
+  settings.unshadowed_character_senders = state->unshadowed_senders;
   state->tracer = std::make_unique<ref::PathTracer>(*state->geometry, *sources.lighting, *sources.background, settings);
   state->camera = world_state.camera;
   return std::unique_ptr<FrameTracer>(new FrameTracer(std::move(state)));
@@ -145,11 +150,12 @@ ref::PixelFeatures FrameTracer::features() const {
 namespace {
 
 std::filesystem::path reference_file(const ChartScene& chart, int frame, const ReferenceOptions& options,
-                                     bool character_senders) {
+                                     const FrameTracer& tracer) {
   // A stream, not operator+ chains: GCC 12 warns falsely (-Wrestrict) on those at -O3.
   std::ostringstream name;
   name << "frame" << frame << '-';
-  if (!character_senders) name << "nosend-";
+  if (!tracer.character_senders()) name << "nosend-";
+  if (tracer.unshadowed_senders()) name << "unshadowed-";
   if (options.lighting == ref::LightingKind::sh)
     name << "sh-n" << options.reference_order;
   else
@@ -162,14 +168,16 @@ std::filesystem::path reference_file(const ChartScene& chart, int frame, const R
 
 Result<FrameReference> load_or_render_reference(const ChartScene& chart, int frame, const FrameTracer& tracer,
                                                 const ReferenceOptions& options) {
-  const ref::ReferencePaths paths = ref::reference_paths(reference_file(chart, frame, options, tracer.character_senders()));
+  const ref::ReferencePaths paths = ref::reference_paths(reference_file(chart, frame, options, tracer));
   ref::ReferenceRecord record;
   record.scene = chart.name;
   record.frame = frame;
   record.time_s = scene::frame_time_s(chart.scene.output, frame);
   record.width = tracer.width();
   record.height = tracer.height();
-  record.transport = tracer.character_senders() ? "one-bounce" : "one-bounce-no-character-senders";
+  record.transport = !tracer.character_senders()  ? "one-bounce-no-character-senders"
+                     : tracer.unshadowed_senders() ? "one-bounce-unshadowed-character-senders"
+                                                   : "one-bounce";
   record.lighting = options.lighting == ref::LightingKind::sh ? "sh" : "full";
   record.sh_order = options.reference_order;
   record.seed = kReferenceSeed;
@@ -191,7 +199,8 @@ Result<FrameReference> load_or_render_reference(const ChartScene& chart, int fra
   const int missing = options.reference_spp - int(record.samples);
   if (missing > 0) {
     std::fprintf(stderr, "bench chart: reference%s %s frame %d, %d spp at %dx%d\n",
-                 tracer.character_senders() ? "" : " without character senders", chart.name.c_str(), frame, missing,
+                 !tracer.character_senders() ? " without character senders"
+                 : tracer.unshadowed_senders() ? " with unshadowed character senders" : "", chart.name.c_str(), frame, missing,
                  record.width, record.height);
     ref::RenderStats stats;
     auto traced = tracer.trace(missing, kReferenceSeed, record.samples, &stats, options.progress);

@@ -41,6 +41,9 @@ struct ReferenceOptions {
   int guided_radius = 8;            // pixels (Bauszat: 24–32 at 512², scaled to the chart size)
   float guided_depth_scale = 20.0f; // meters: the character stage's extent
   bool progress = true;             // progress line on stderr while tracing
+  // Characters lit without shadows as senders (ref::PathTracerSettings::unshadowed_character_senders),
+  // the bounce methods' assumption; cached as "...-unshadowed-...". Not physical: a study option.
+  bool unshadowed_senders = false;
 };
 
 struct FrameReference {
@@ -85,7 +88,7 @@ Result<SceneSources> load_scene_sources(const ChartScene& chart, const Reference
 class FrameTracer {
  public:
   static Result<std::unique_ptr<FrameTracer>> create(const SceneSources& sources, int frame,
-                                                     bool character_senders = true);
+                                                     bool character_senders = true, bool unshadowed_senders = false);
   ~FrameTracer();
   // Traces `spp` samples with `seed` from sample 0 (all cores); seconds = tracing wall time.
   Result<ref::SampleSums> trace(int spp, std::uint32_t seed, std::uint32_t first_sample, ref::RenderStats* stats,
@@ -94,6 +97,7 @@ class FrameTracer {
   // The ground, contact and other regions of FrameReference (pixel-center rays, as the character region).
   void region_masks(ref::ReceiverMask& ground, ref::ReceiverMask& contact, ref::ReceiverMask& other) const;
   bool character_senders() const;
+  bool unshadowed_senders() const;
   int width() const;
   int height() const;
 

@@ -115,10 +115,12 @@ ref::EmbreeScene ground_and_quad(glm::vec3 quad_albedo) {
   return std::move(*scene);
 }
 
-glm::vec3 shade_sum(const ref::EmbreeScene& scene, const ref::SurfaceHit& hit, bool character_senders) {
+glm::vec3 shade_sum(const ref::EmbreeScene& scene, const ref::SurfaceHit& hit, bool character_senders,
+                    bool unshadowed_senders = false) {
   const ref::EnvironmentLight light = ref::EnvironmentLight::constant(glm::vec3(1.0f));
   ref::PathTracerSettings settings;
   settings.character_senders = character_senders;
+  settings.unshadowed_character_senders = unshadowed_senders;
   const ref::PathTracer tracer(scene, light, light, settings);
   glm::vec3 sum(0.0f);
   for (std::uint32_t sample = 0; sample < 256; ++sample) {
@@ -149,6 +151,36 @@ TEST(BounceScores, WithoutCharacterSendersTheGroundSeesABlackCharacter) {
   on_quad.character = true;
   EXPECT_GT(shade_sum(red, on_quad, false).r, 0.0f);
   EXPECT_EQ(shade_sum(red, on_quad, false), shade_sum(red, on_quad, true));
+}
+
+TEST(BounceScores, UnshadowedSendersSeeTheWholeSky) {
+  // A roof over the quad (not a character) shades it; unshadowed, the quad reflects the full sky.
+  std::vector<ref::TriangleMesh> meshes = ref::ground_meshes(scene::Ground{true, 6.0f, glm::vec3(0.8f)});
+  ref::TriangleMesh quad;
+  quad.character = true;
+  quad.positions = {{0.5f, 0.0f, -1.0f}, {0.5f, 0.0f, 1.0f}, {0.5f, 2.0f, 1.0f}, {0.5f, 2.0f, -1.0f}};
+  quad.normals.assign(4, glm::vec3(-1.0f, 0.0f, 0.0f));
+  quad.indices = {0, 1, 2, 0, 2, 3};
+  quad.material.albedo = glm::vec3(0.9f);
+  ref::TriangleMesh roof;
+  roof.positions = {{-0.3f, 2.1f, -3.0f}, {3.0f, 2.1f, -3.0f}, {3.0f, 2.1f, 3.0f}, {-0.3f, 2.1f, 3.0f}};
+  roof.normals.assign(4, glm::vec3(0.0f, -1.0f, 0.0f));
+  roof.indices = {0, 2, 1, 0, 3, 2};
+  meshes.push_back(quad);
+  meshes.push_back(roof);
+  auto scene = ref::EmbreeScene::build(std::move(meshes));
+  ASSERT_TRUE(scene.ok()) << scene.message();
+  ref::SurfaceHit ground;
+  ground.position = glm::vec3(-1.0f, 0.0f, 0.0f);
+  ground.geometric_normal = ground.shading_normal = glm::vec3(0.0f, 1.0f, 0.0f);
+  ground.albedo = glm::vec3(0.8f);
+  const glm::vec3 without = shade_sum(*scene, ground, false);
+  const glm::vec3 shadowed = shade_sum(*scene, ground, true) - without;
+  const glm::vec3 unshadowed = shade_sum(*scene, ground, true, true) - without;
+  EXPECT_GT(shadowed.r, 0.0f);
+  EXPECT_GT(unshadowed.r, 1.2f * shadowed.r);
+  // Black senders reflect nothing, shadowed or not.
+  EXPECT_EQ(shade_sum(*scene, ground, false, true), without);
 }
 
 }  // namespace
