@@ -57,7 +57,8 @@ Status write_bounce_report(const std::string& folder, const std::vector<study::B
   std::ostringstream markdown;
   markdown << "# Bounce chart (`proxygi bench chart`)\n\n"
            << context.size << "x" << context.size << " pixels, " << context.frames << " frames per scene, "
-           << context.reference_spp << " spp references; Vulkan device " << context.device << ".\n\n"
+           << context.reference_spp << " spp references under the " << context.lighting << "; Vulkan device "
+           << context.device << ".\n\n"
            << "Reference bounce = path trace minus the same path trace (same seed and samples) in which the characters "
               "reflect nothing after the first vertex; a row's bounce = its frame minus the frame with "
               "`render.indirect_method none` (default SH order, receiver scale and upsampling). bounce relMSE = "
