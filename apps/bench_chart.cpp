@@ -9,13 +9,15 @@
 // (log–log, Pareto front named), -scores.json and -timings.json, prints the table (or JSON with
 // --json), and reports the goals. References are cached under --cache and reused (or continued)
 // by later runs. --shard measures one shard of the chart's units into DIR/bench-chart-shard.json;
-// --merge joins shards into the chart a single run writes (bench_chart_shards.h).
+// --merge joins shards into the chart a single run writes (bench_chart_shards.h). A single run
+// also writes the bounce chart, DIR/bench-chart-bounce.csv, .md and .png (bench_chart_bounce.h).
 #include <unistd.h>
 
 #include <cstdio>
 
 #include <nlohmann/json.hpp>
 
+#include "apps/bench_chart_bounce.h"
 #include "apps/bench_chart_report.h"
 #include "apps/bench_chart_shards.h"
 #include "apps/chart_methods.h"
@@ -44,6 +46,7 @@ struct ChartArgs {
   std::vector<std::string> merge;
   std::string timings_from;
   std::string device;
+  bool unshadowed_senders = false;
 };
 
 // Path-tracing rows of one scene: per (samples, guided) the mean over its frames.
@@ -66,7 +69,11 @@ void add_path_tracing_rows(const std::string& scene, std::size_t unit,
 
 // Means over scenes, Pareto fronts, the files and the printed summary: the same for a single
 // run and a merge of shards.
-int finish_chart(const ChartArgs& args, std::vector<study::ChartRow> rows, const ChartReportContext& report) {
+int finish_chart(const ChartArgs& args, std::vector<study::ChartRow> rows, const ChartReportContext& report,
+                 const std::vector<study::BounceRow>& bounce_rows = {}) {
+  if (!bounce_rows.empty())
+    if (Status written = write_bounce_report(args.out, bounce_rows, report); !written)
+      return fail_runtime("bench chart: " + written.message());
   if (report.scenes.size() > 1) {
     std::vector<study::ChartRow> means = study::mean_over_scenes(rows);
     rows.insert(rows.begin(), means.begin(), means.end());
@@ -135,6 +142,7 @@ int run_bench_chart(const ChartArgs& args) {
   reference_options.cache_dir = args.cache;
   reference_options.assets_dir = assets_dir();
   reference_options.guided_radius = std::max(2, args.size / 24);
+  reference_options.unshadowed_senders = args.unshadowed_senders;
   const bool terminal = isatty(fileno(stderr)) != 0;
   reference_options.progress = !args.json && !quiet() && terminal;  // the tracer's progress is one \r line
   const std::vector<int> sample_counts = args.quick ? std::vector<int>{1, 4} : std::vector<int>{1, 4, 16, 64};
@@ -146,6 +154,10 @@ int run_bench_chart(const ChartArgs& args) {
     context = std::move(*created);
   }
   std::vector<UnitRow> rows;
+  // The bounce chart (bench_chart_bounce.h) needs each frame's reference without character
+  // senders; a shard measures the main chart only.
+  const bool bounce_chart = args.shard.empty();
+  std::vector<study::BounceRow> bounce_rows;
   const std::vector<MethodSetting> grid = method_grid(args.quick);
   const std::size_t units_per_scene = grid.size() + 1;  // path tracing, then each setting
   const std::size_t units = scenes->size() * units_per_scene;
@@ -160,11 +172,12 @@ int run_bench_chart(const ChartArgs& args) {
       if (slice.contains(first_unit + 1 + k)) grid_part.push_back(grid[k]), setting_units.push_back(first_unit + 1 + k);
     if (!path_tracing && grid_part.empty()) continue;  // another shard's scene: not even its references
     std::vector<study::FrameReference> references;
+    std::vector<study::BounceReference> bounce_references;
     std::vector<std::vector<study::PathTracingScore>> path_tracing_scores;
     auto sources = study::load_scene_sources(chart, reference_options);
     if (!sources) return fail_runtime("bench chart: " + chart.name + ": " + sources.message());
     for (int frame : chart.frames) {
-      auto tracer = study::FrameTracer::create(*sources, frame);
+      auto tracer = study::FrameTracer::create(*sources, frame, true, reference_options.unshadowed_senders);
       if (!tracer) return fail_runtime("bench chart: " + chart.name + ": " + tracer.message());
       auto reference = study::load_or_render_reference(chart, frame, **tracer, reference_options);
       if (!reference) return fail_runtime("bench chart: " + chart.name + " reference: " + reference.message());
@@ -173,12 +186,22 @@ int run_bench_chart(const ChartArgs& args) {
         if (!scores) return fail_runtime("bench chart: " + chart.name + " path tracing: " + scores.message());
         path_tracing_scores.push_back(std::move(*scores));
       }
+      if (bounce_chart) {
+        auto without = study::FrameTracer::create(*sources, frame, false);
+        if (!without) return fail_runtime("bench chart: " + chart.name + ": " + without.message());
+        auto senderless = study::load_or_render_reference(chart, frame, **without, reference_options);
+        if (!senderless) return fail_runtime("bench chart: " + chart.name + " reference: " + senderless.message());
+        auto bounce = study::make_bounce_reference(*reference, *senderless);
+        if (!bounce) return fail_runtime("bench chart: " + chart.name + ": " + bounce.message());
+        bounce_references.push_back(std::move(*bounce));
+      }
       references.push_back(std::move(*reference));
     }
     if (args.references_only) continue;
     add_path_tracing_rows(chart.name, first_unit, path_tracing_scores, rows);
     const Status measured = run_raster_methods(
-        *context, chart, grid_part, references, {args.timing_frames}, [&](std::size_t i, const study::ChartRow& row) {
+        *context, chart, grid_part, references,
+        {args.timing_frames, bounce_chart ? &bounce_references : nullptr, bounce_chart ? &bounce_rows : nullptr}, [&](std::size_t i, const study::ChartRow& row) {
           // One line rewritten with \r on a terminal, a line per row into a file or pipe.
           if (!args.json && !quiet())
             std::fprintf(stderr, "%s  %s: %zu/%zu %-40s %8.2f ms  relMSE %.4g%s", terminal ? "\r" : "", chart.name.c_str(), i + 1,
@@ -206,6 +229,7 @@ int run_bench_chart(const ChartArgs& args) {
   report.timing_frames = args.timing_frames;
   report.reference_spp = args.reference_spp;
   report.lighting = args.lighting == "full" ? "full environment" : "environment band-limited to SH order 6";
+  if (args.unshadowed_senders) report.lighting += ", characters lit without shadows where they reflect light";
   for (const study::ChartScene& chart : *scenes) report.scenes.push_back(chart.name);
   if (!args.shard.empty()) {
     const ChartShard measured{report, args.quick, shard, units, std::move(rows)};
@@ -221,7 +245,7 @@ int run_bench_chart(const ChartArgs& args) {
   }
   std::vector<study::ChartRow> chart_rows;
   for (UnitRow& r : rows) chart_rows.push_back(std::move(r.row));
-  return finish_chart(args, std::move(chart_rows), report);
+  return finish_chart(args, std::move(chart_rows), report, bounce_rows);
 }
 
 }  // namespace
@@ -240,14 +264,19 @@ void add_bench_chart_command(CLI::App& bench, CommandRunner& runner) {
   command->add_option("--reference-spp", args->reference_spp, "Samples per pixel of the references")
       ->check(CLI::Range(1, settings::kMaxSamplesPerPixel))
       ->capture_default_str();
-  command->add_option("--scenes", args->scenes, "Only these scenes (default, CesiumMan, Fox, RiggedSimple; pair only when named)")
+  command->add_option("--scenes", args->scenes,
+                      "Only these scenes (default, CesiumMan, Fox, RiggedSimple; only when named: pair and the bounce "
+                      "study's contact, wall (wall-0.5, -1, -2, -4), pair-distance (pair-0.5, -1, -2, -5), crowd)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"default", "CesiumMan", "Fox", "RiggedSimple", "pair"}));
+      ->check(CLI::IsMember(study::chart_scene_names()));
   command->add_option("--shared", args->shared, "Folder holding assets/gltf with the sample characters")
       ->capture_default_str();
   command->add_option("--lighting", args->lighting, "Reference lighting: sh (order 6) or full")
       ->check(CLI::IsMember({"sh", "full"}))
       ->capture_default_str();
+  command->add_flag("--unshadowed-senders", args->unshadowed_senders,
+                    "References light the characters without shadows where they reflect light (the bounce methods' "
+                    "assumption; not physical)");
   command->add_flag("--quick", args->quick, "A small grid (default setting and each baseline), 1 and 4 spp");
   command->add_flag("--references-only", args->references_only, "Only render (or complete) the cached references");
   command->add_option("--shard", args->shard, "I/N: measure only the I-th (0-based) of N contiguous runs of the chart's "

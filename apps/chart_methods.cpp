@@ -1,5 +1,9 @@
 #include "apps/chart_methods.h"
 
+#include <algorithm>
+#include <map>
+#include <optional>
+
 #include "apps/commands.h"
 #include "gpu/scene_renderer.h"
 #include "run/frame_loop.h"
@@ -47,6 +51,13 @@ std::vector<MethodSetting> method_grid(bool quick) {
     grid.push_back({settings::ShadingMethod::ambient_occlusion, defaults.sh_order, scale, settings::Upsampling::bilateral,
                     defaults.indirect_operator});
   return grid;
+}
+
+bool bounce_row_setting(const MethodSetting& setting) {
+  const settings::RenderSettings defaults;
+  return setting.method == settings::ShadingMethod::image_space && setting.sh_order == defaults.sh_order &&
+         setting.receiver_scale == defaults.receiver_scale && setting.upsampling == defaults.upsampling &&
+         setting.ground_bounce;
 }
 
 study::ChartRow describe_setting(const MethodSetting& setting, const std::string& scene) {
@@ -111,7 +122,19 @@ Status run_raster_methods(gpu::Context& context, const study::ChartScene& chart,
                                              grid_settings.front(), std::uint32_t(scene.output.width),
                                              std::uint32_t(scene.output.height));
   if (!renderer) return renderer.error();
-  return run::sweep_settings(**renderer, grid_settings, [&](std::size_t index, gpu::SceneRenderer& live) -> Status {
+  // Bounce chart: the frames of each scored setting, kept until the none setting's are known.
+  const bool bounce = options.bounce_references && options.bounce_rows;
+  std::vector<std::size_t> bounce_settings;
+  std::optional<std::size_t> none_setting;
+  std::map<std::size_t, std::pair<study::ChartRow, std::vector<image::ImageF>>> bounce_frames;
+  if (bounce)
+    for (std::size_t i = 0; i < grid.size(); ++i)
+      if (bounce_row_setting(grid[i])) {
+        bounce_settings.push_back(i);
+        if (grid[i].indirect_method == settings::IndirectMethod::none) none_setting = i;
+      }
+  if (bounce && !none_setting) return make_error("the bounce chart needs the indirect_method none setting in the grid");
+  const Status swept = run::sweep_settings(**renderer, grid_settings, [&](std::size_t index, gpu::SceneRenderer& live) -> Status {
     study::ChartRow row = describe_setting(grid[index], chart.name);
     auto milliseconds = run::time_pipelined_frames(live, scene.output.first_frame, options.timing_frames);
     if (!milliseconds) return milliseconds.error();
@@ -122,10 +145,28 @@ Status run_raster_methods(gpu::Context& context, const study::ChartScene& chart,
       auto scores = study::score_image(finished->hdr, references[i]);
       if (!scores) return make_error("frame " + std::to_string(chart.frames[i]) + ": " + scores.message());
       study::add_scores(row, *scores, 1.0 / double(chart.frames.size()));
+      if (std::find(bounce_settings.begin(), bounce_settings.end(), index) != bounce_settings.end())
+        bounce_frames[index].second.push_back(std::move(finished->hdr));
     }
+    if (bounce_frames.count(index)) bounce_frames[index].first = row;
     on_row(index, row);
     return {};
   });
+  if (!swept || !bounce) return swept;
+  const std::vector<image::ImageF>& none = bounce_frames.at(*none_setting).second;
+  for (std::size_t index : bounce_settings) {
+    auto& [row, frames] = bounce_frames.at(index);
+    std::vector<study::BounceScores> scores;
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+      auto frame_bounce = study::bounce_image(frames[i], none[i]);
+      if (!frame_bounce) return frame_bounce.error();
+      auto scored = study::score_bounce(*frame_bounce, (*options.bounce_references)[i]);
+      if (!scored) return make_error("frame " + std::to_string(chart.frames[i]) + " bounce: " + scored.message());
+      scores.push_back(*scored);
+    }
+    options.bounce_rows->push_back({row, study::mean_bounce_scores(scores)});
+  }
+  return {};
 }
 
 }  // namespace proxygi::app

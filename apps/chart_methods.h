@@ -8,6 +8,7 @@
 #include "base/result.h"
 #include "gpu/context.h"
 #include "scene/scene.h"
+#include "study/bounce_rows.h"
 #include "study/chart_rows.h"
 #include "study/chart_scenes.h"
 #include "study/reference_study.h"
@@ -40,7 +41,16 @@ study::ChartRow describe_setting(const MethodSetting& setting, const std::string
 
 struct MethodRunOptions {
   int timing_frames = 4;  // pipelined frames timed after two warm-up frames
+  // When set (one per chart frame, as `references`): the bounce chart's rows, appended to
+  // `bounce_rows` after the sweep, for each setting bounce_row_setting accepts, scored against
+  // the grid's indirect_method none setting (which the grid must hold).
+  const std::vector<study::BounceReference>* bounce_references = nullptr;
+  std::vector<study::BounceRow>* bounce_rows = nullptr;
 };
+
+// The settings the bounce chart scores: the proxy method at the default SH order, receiver scale
+// and upsampling, with the ground bounce, any indirect method (none included: its bounce is 0).
+bool bounce_row_setting(const MethodSetting& setting);
 
 // Renders `chart` with every setting of `grid` on one renderer, each setting applied in place
 // (run::sweep_settings: the scene's models are imported and its rigs obtained once): ms per frame

@@ -35,7 +35,9 @@ PathSample PathTracer::shade(const SurfaceHit& first, SampleStream& random) cons
   glm::vec3 throughput(1.0f);
   for (int bounce = 0;; ++bounce) {
     const glm::vec3& n = vertex.shading_normal;
+    if (bounce > 0 && vertex.character && !settings_.character_senders) vertex.albedo = glm::vec3(0.0f);
     const glm::vec3 f = vertex.albedo * (1.0f / kPi);
+    const bool unshadowed = bounce > 0 && vertex.character && settings_.unshadowed_character_senders;
     glm::vec3 contribution(0.0f);
 
     // Sun: next-event estimation, MIS-weighted against the BSDF sample below.
@@ -45,7 +47,7 @@ PathSample PathTracer::shade(const SurfaceHit& first, SampleStream& random) cons
       const float cos_theta = glm::dot(n, d);
       if (cos_theta > 0.0f && glm::dot(vertex.geometric_normal, d) > 0.0f) {
         ++out.rays;
-        if (!scene_.occluded(offset_ray_origin(vertex, d), d)) {
+        if (unshadowed || !scene_.occluded(offset_ray_origin(vertex, d), d)) {
           const float pdf_light = uniform_cone_pdf(lighting_.sun_cos_radius());
           const float weight = power_heuristic(pdf_light, cosine_hemisphere_pdf(cos_theta));
           contribution += f * lighting_.sun_radiance() * (cos_theta * weight / pdf_light);
@@ -62,7 +64,7 @@ PathSample PathTracer::shade(const SurfaceHit& first, SampleStream& random) cons
       const float cos_theta = glm::dot(n, d);
       if (pdf_environment > 0.0f && cos_theta > 0.0f && glm::dot(vertex.geometric_normal, d) > 0.0f) {
         ++out.rays;
-        if (!scene_.occluded(offset_ray_origin(vertex, d), d)) {
+        if (unshadowed || !scene_.occluded(offset_ray_origin(vertex, d), d)) {
           const float weight = power_heuristic(pdf_environment, cosine_hemisphere_pdf(cos_theta));
           contribution += f * lighting_.radiance_without_sun(d) * (cos_theta * weight / pdf_environment);
         }
@@ -76,6 +78,7 @@ PathSample PathTracer::shade(const SurfaceHit& first, SampleStream& random) cons
     if (above_surface) {
       ++out.rays;
       next = scene_.intersect(offset_ray_origin(vertex, d), d);
+      if (unshadowed) next.reset();  // the sky as if nothing blocked it (the path ends here anyway)
       if (!next) {
         glm::vec3 environment = lighting_.radiance_without_sun(d);
         if (environment_sampler)

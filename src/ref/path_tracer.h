@@ -40,6 +40,14 @@ struct PathTracerSettings {
   LightTransport transport = LightTransport::one_bounce;
   int russian_roulette_depth = 3;  // multi_bounce: first vertex where roulette may end a path
   int max_bounces = 64;            // multi_bounce: hard cap
+  // false: a character reached at a vertex after the first reflects nothing (its albedo taken as
+  // 0 there; primary hits keep theirs). The random stream is consumed the same, so with the same
+  // seed the difference to a `true` render is exactly the light the characters bounce.
+  bool character_senders = true;
+  // true: a character reached after the first vertex is lit without shadows (its light samples
+  // and BSDF ray count as unoccluded), as the bounce methods light their senders (the VPLs' and
+  // proxies' unshadowed irradiance): a reference for their assumption, not a physical one.
+  bool unshadowed_character_senders = false;
 };
 
 struct PathSample {

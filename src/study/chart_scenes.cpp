@@ -65,14 +65,16 @@ std::vector<int> spread_frames(int first, int count, int frame_count) {
 }
 
 Result<std::vector<ChartScene>> chart_scenes(const ChartSceneOptions& options) {
+  const std::vector<std::string> only = expand_scene_groups(options.only);
   auto wanted = [&](const std::string& name) {
-    return options.only.empty() || std::find(options.only.begin(), options.only.end(), name) != options.only.end();
+    return only.empty() || std::find(only.begin(), only.end(), name) != only.end();
   };
+  auto named = [&](const std::string& name) { return !only.empty() && wanted(name); };
   std::vector<ChartScene> scenes;
   if (wanted("default")) scenes.push_back({"default", scene::default_scene(), {}});
   // Only when named: the default scene with a second mannequin walking 1.5 m behind the first
   // (bounce between characters beyond the proxies' sphere of influence: where VSGL should win).
-  if (!options.only.empty() && wanted("pair")) {
+  if (named("pair")) {
     ChartScene pair{"pair", scene::default_scene(), {}};
     scene::Character second = pair.scene.characters.front();
     scene::WalkPath& path = *second.path;
@@ -97,6 +99,9 @@ Result<std::vector<ChartScene>> chart_scenes(const ChartSceneOptions& options) {
     if (!scene) return scene.error();
     scenes.push_back(std::move(*scene));
   }
+  auto study = bounce_study_scenes(options, named);
+  if (!study) return study.error();
+  for (ChartScene& chart : *study) scenes.push_back(std::move(chart));
   for (ChartScene& chart : scenes) {
     chart.scene.output.width = chart.scene.output.height = options.size;
     chart.frames = spread_frames(chart.scene.output.first_frame, chart.scene.output.frame_count, options.frame_count);

@@ -1,8 +1,10 @@
 #include "study/reference_study.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <unordered_map>
 
 #include "ref/embree_scene.h"
 #include "ref/flip.h"
@@ -13,17 +15,70 @@
 
 namespace proxygi::study {
 
+namespace {
+
+// Character vertices bucketed into cubes of kContactRadiusM: a point's neighbours within the
+// radius lie in the 27 cubes around its own.
+class VertexGrid {
+ public:
+  void add(const glm::vec3& p) { cells_[key(cell(p))].push_back(p); }
+  bool near(const glm::vec3& p, float radius) const {
+    const glm::ivec3 c = cell(p);
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const auto found = cells_.find(key(c + glm::ivec3(dx, dy, dz)));
+          if (found == cells_.end()) continue;
+          for (const glm::vec3& q : found->second)
+            if (glm::dot(q - p, q - p) <= radius * radius) return true;
+        }
+    return false;
+  }
+
+ private:
+  static glm::ivec3 cell(const glm::vec3& p) { return glm::ivec3(glm::floor(p / kContactRadiusM)); }
+  static std::int64_t key(const glm::ivec3& c) {
+    return (std::int64_t(c.x & 0x1fffff) << 42) | (std::int64_t(c.y & 0x1fffff) << 21) | std::int64_t(c.z & 0x1fffff);
+  }
+  std::unordered_map<std::int64_t, std::vector<glm::vec3>> cells_;
+};
+
+}  // namespace
+
 struct FrameTracer::State {
   const SceneSources* sources = nullptr;
   std::unique_ptr<ref::EmbreeScene> geometry;
   std::unique_ptr<ref::PathTracer> tracer;
   scene::CameraState camera;
+  VertexGrid character_vertices;
+  bool character_senders = true;
+  bool unshadowed_senders = false;
 };
 
 FrameTracer::FrameTracer(std::unique_ptr<State> state) : state_(std::move(state)) {}
 FrameTracer::~FrameTracer() = default;
 int FrameTracer::width() const { return state_->sources->scene.output.width; }
 int FrameTracer::height() const { return state_->sources->scene.output.height; }
+bool FrameTracer::character_senders() const { return state_->character_senders; }
+bool FrameTracer::unshadowed_senders() const { return state_->unshadowed_senders; }
+
+void FrameTracer::region_masks(ref::ReceiverMask& ground, ref::ReceiverMask& contact, ref::ReceiverMask& other) const {
+  const int w = width(), h = height();
+  ground = contact = other = ref::mask_where(w, h, [](int, int) { return false; });
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const scene::Ray ray = scene::ray_through_pixel(state_->camera, w, h, float(x) + 0.5f, float(y) + 0.5f);
+      const std::optional<ref::SurfaceHit> hit = state_->geometry->intersect(ray.origin, ray.direction);
+      if (!hit || hit->character) continue;
+      const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);
+      if (std::abs(hit->position.y) > 1e-3f || hit->geometric_normal.y < 0.99f) {
+        other.receiver[i] = 1;
+        continue;
+      }
+      ground.receiver[i] = 1;
+      if (state_->character_vertices.near(hit->position, kContactRadiusM)) contact.receiver[i] = 1;
+    }
+}
 
 Result<SceneSources> load_scene_sources(const ChartScene& chart, const ReferenceOptions& options) {
   SceneSources sources;
@@ -41,19 +96,27 @@ Result<SceneSources> load_scene_sources(const ChartScene& chart, const Reference
   return sources;
 }
 
-Result<std::unique_ptr<FrameTracer>> FrameTracer::create(const SceneSources& sources, int frame) {
+Result<std::unique_ptr<FrameTracer>> FrameTracer::create(const SceneSources& sources, int frame, bool character_senders,
+                                                          bool unshadowed_senders) {
   auto state = std::make_unique<State>();
   state->sources = &sources;
+  state->character_senders = character_senders;
+  state->unshadowed_senders = unshadowed_senders && character_senders;  // black senders: no difference
   const double time_s = scene::frame_time_s(sources.scene.output, frame);
   world::WorldState world_state;
   if (Status evaluated = sources.world->evaluate(time_s, std::nullopt, world_state); !evaluated) return evaluated.error();
   auto meshes = ref::world_meshes(*sources.world, world_state, sources.geometry);
   if (!meshes) return meshes.error();
+  for (const ref::TriangleMesh& mesh : *meshes)
+    if (mesh.character)
+      for (const glm::vec3& p : mesh.positions) state->character_vertices.add(p);
   auto geometry = ref::EmbreeScene::build(std::move(*meshes));
   if (!geometry) return geometry.error();
   state->geometry = std::make_unique<ref::EmbreeScene>(std::move(*geometry));
   ref::PathTracerSettings settings;
   settings.transport = ref::LightTransport::one_bounce;
+  settings.character_senders = character_senders;
+  settings.unshadowed_character_senders = state->unshadowed_senders;
   state->tracer = std::make_unique<ref::PathTracer>(*state->geometry, *sources.lighting, *sources.background, settings);
   state->camera = world_state.camera;
   return std::unique_ptr<FrameTracer>(new FrameTracer(std::move(state)));
@@ -86,10 +149,13 @@ ref::PixelFeatures FrameTracer::features() const {
 
 namespace {
 
-std::filesystem::path reference_file(const ChartScene& chart, int frame, const ReferenceOptions& options) {
+std::filesystem::path reference_file(const ChartScene& chart, int frame, const ReferenceOptions& options,
+                                     const FrameTracer& tracer) {
   // A stream, not operator+ chains: GCC 12 warns falsely (-Wrestrict) on those at -O3.
   std::ostringstream name;
   name << "frame" << frame << '-';
+  if (!tracer.character_senders()) name << "nosend-";
+  if (tracer.unshadowed_senders()) name << "unshadowed-";
   if (options.lighting == ref::LightingKind::sh)
     name << "sh-n" << options.reference_order;
   else
@@ -102,14 +168,16 @@ std::filesystem::path reference_file(const ChartScene& chart, int frame, const R
 
 Result<FrameReference> load_or_render_reference(const ChartScene& chart, int frame, const FrameTracer& tracer,
                                                 const ReferenceOptions& options) {
-  const ref::ReferencePaths paths = ref::reference_paths(reference_file(chart, frame, options));
+  const ref::ReferencePaths paths = ref::reference_paths(reference_file(chart, frame, options, tracer));
   ref::ReferenceRecord record;
   record.scene = chart.name;
   record.frame = frame;
   record.time_s = scene::frame_time_s(chart.scene.output, frame);
   record.width = tracer.width();
   record.height = tracer.height();
-  record.transport = "one-bounce";
+  record.transport = !tracer.character_senders()  ? "one-bounce-no-character-senders"
+                     : tracer.unshadowed_senders() ? "one-bounce-unshadowed-character-senders"
+                                                   : "one-bounce";
   record.lighting = options.lighting == ref::LightingKind::sh ? "sh" : "full";
   record.sh_order = options.reference_order;
   record.seed = kReferenceSeed;
@@ -130,7 +198,9 @@ Result<FrameReference> load_or_render_reference(const ChartScene& chart, int fra
   }
   const int missing = options.reference_spp - int(record.samples);
   if (missing > 0) {
-    std::fprintf(stderr, "bench chart: reference %s frame %d, %d spp at %dx%d\n", chart.name.c_str(), frame, missing,
+    std::fprintf(stderr, "bench chart: reference%s %s frame %d, %d spp at %dx%d\n",
+                 !tracer.character_senders() ? " without character senders"
+                 : tracer.unshadowed_senders() ? " with unshadowed character senders" : "", chart.name.c_str(), frame, missing,
                  record.width, record.height);
     ref::RenderStats stats;
     auto traced = tracer.trace(missing, kReferenceSeed, record.samples, &stats, options.progress);
@@ -156,6 +226,7 @@ Result<FrameReference> load_or_render_reference(const ChartScene& chart, int fra
   reference.radiance = images.radiance;
   reference.receivers = ref::mask_from_image(reference.features.mask);
   reference.character = ref::mask_from_image(reference.features.character);
+  tracer.region_masks(reference.ground, reference.contact, reference.other);
   reference.samples = record.samples;
   reference.trace_seconds = record.seconds;
   return reference;

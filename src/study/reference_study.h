@@ -30,6 +30,7 @@ namespace proxygi::study {
 
 inline constexpr std::uint32_t kReferenceSeed = 1;
 inline constexpr std::uint32_t kTestSeed = 977;  // path-tracing rows: independent of the reference
+inline constexpr float kContactRadiusM = 0.3f;   // the "contact" region: ground this close to a character
 
 struct ReferenceOptions {
   int reference_spp = 1024;
@@ -40,6 +41,9 @@ struct ReferenceOptions {
   int guided_radius = 8;            // pixels (Bauszat: 24–32 at 512², scaled to the chart size)
   float guided_depth_scale = 20.0f; // meters: the character stage's extent
   bool progress = true;             // progress line on stderr while tracing
+  // Characters lit without shadows as senders (ref::PathTracerSettings::unshadowed_character_senders),
+  // the bounce methods' assumption; cached as "...-unshadowed-...". Not physical: a study option.
+  bool unshadowed_senders = false;
 };
 
 struct FrameReference {
@@ -47,6 +51,9 @@ struct FrameReference {
   ref::PixelFeatures features; // pixel-center features (guide of the filter)
   ref::ReceiverMask receivers; // pixels the center ray hits
   ref::ReceiverMask character; // pixels the center ray hits a character in (the "character" region)
+  ref::ReceiverMask ground;    // pixels the center ray hits the ground plane (y = 0) in
+  ref::ReceiverMask contact;   // ground pixels within kContactRadiusM of a character's vertex
+  ref::ReceiverMask other;     // pixels the center ray hits neither a character nor the ground in (a wall)
   std::uint32_t samples = 0;
   double trace_seconds = 0.0;  // all runs together
 };
@@ -75,15 +82,22 @@ struct SceneSources {
 Result<SceneSources> load_scene_sources(const ChartScene& chart, const ReferenceOptions& options);
 
 // The path tracer set up for one frame of a chart scene (the world evaluated at the frame's time).
-// `sources` must outlive the tracer.
+// `sources` must outlive the tracer. character_senders = false: the characters reflect no light
+// after the first vertex (ref::PathTracerSettings), the reference the bounce is measured against;
+// its cache file is named "...-nosend-..." apart from the full reference.
 class FrameTracer {
  public:
-  static Result<std::unique_ptr<FrameTracer>> create(const SceneSources& sources, int frame);
+  static Result<std::unique_ptr<FrameTracer>> create(const SceneSources& sources, int frame,
+                                                     bool character_senders = true, bool unshadowed_senders = false);
   ~FrameTracer();
   // Traces `spp` samples with `seed` from sample 0 (all cores); seconds = tracing wall time.
   Result<ref::SampleSums> trace(int spp, std::uint32_t seed, std::uint32_t first_sample, ref::RenderStats* stats,
                                 bool progress, ref::Sampler sampler = ref::Sampler::sobol) const;
   ref::PixelFeatures features() const;
+  // The ground, contact and other regions of FrameReference (pixel-center rays, as the character region).
+  void region_masks(ref::ReceiverMask& ground, ref::ReceiverMask& contact, ref::ReceiverMask& other) const;
+  bool character_senders() const;
+  bool unshadowed_senders() const;
   int width() const;
   int height() const;
 
