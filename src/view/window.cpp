@@ -71,7 +71,9 @@ Result<std::unique_ptr<Window>> Window::create(int width, int height, const std:
   glfwSetCursorEnterCallback(window->window_, on_enter);
   glfwSetWindowFocusCallback(window->window_, on_focus);
   glfwSetWindowSizeCallback(window->window_, on_size);
+  glfwSetFramebufferSizeCallback(window->window_, on_framebuffer_size);
   glfwGetWindowSize(window->window_, &window->window_width_, &window->window_height_);
+  glfwGetFramebufferSize(window->window_, &window->framebuffer_width_, &window->framebuffer_height_);
   glfwGetCursorPos(window->window_, &window->cursor_x_, &window->cursor_y_);
   window->focused_ = glfwGetWindowAttrib(window->window_, GLFW_FOCUSED) != 0;
   window->inside_ = window->cursor_x_ >= 0 && window->cursor_y_ >= 0 && window->cursor_x_ < window->window_width_ &&
@@ -146,7 +148,9 @@ std::vector<Event> Window::poll() {
 }
 
 bool Window::should_close() const { return glfwWindowShouldClose(window_); }
-void Window::framebuffer_size(int& width, int& height) const { glfwGetFramebufferSize(window_, &width, &height); }
+void Window::framebuffer_size(int& width, int& height) const {
+  width = framebuffer_width_, height = framebuffer_height_;
+}
 void Window::set_title(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
 
 void Window::resize(int width, int height) {
@@ -198,6 +202,10 @@ void Window::on_enter(GLFWwindow* window, int entered) { self(window)->inside_ =
 void Window::on_focus(GLFWwindow* window, int focused) { self(window)->focused_ = focused != 0; }
 void Window::on_size(GLFWwindow* window, int width, int height) {
   self(window)->window_width_ = width, self(window)->window_height_ = height;
+}
+
+void Window::on_framebuffer_size(GLFWwindow* window, int width, int height) {
+  self(window)->framebuffer_width_ = width, self(window)->framebuffer_height_ = height;
 }
 
 void Window::on_drop(GLFWwindow* window, int count, const char** paths) {

@@ -7,7 +7,8 @@
 //
 // new_imgui_frame() replaces the backend's ImGui_ImplGlfw_NewFrame: that one asks the X server
 // for the window size (twice), the focus and the pointer every frame, four round trips that
-// cost about 1 ms a frame under Xvfb on a busy CPU; here they come from GLFW's callbacks.
+// cost about 1 ms a frame under Xvfb on a busy CPU; here they come from GLFW's callbacks, and
+// so does the framebuffer size the viewer asks for each frame.
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -41,6 +42,7 @@ class Window {
   // Polls GLFW and returns the events since the last call.
   std::vector<Event> poll();
   bool should_close() const;
+  // As of the last poll (GLFW's size events; no server request).
   void framebuffer_size(int& width, int& height) const;
   void set_title(const std::string& title);
   void resize(int width, int height);  // ResizeEvent: 0 × 0 minimizes, negative restores
@@ -56,6 +58,7 @@ class Window {
   static void on_enter(GLFWwindow* window, int entered);
   static void on_focus(GLFWwindow* window, int focused);
   static void on_size(GLFWwindow* window, int width, int height);
+  static void on_framebuffer_size(GLFWwindow* window, int width, int height);
 
   GLFWwindow* window_ = nullptr;
   bool imgui_ = false;
@@ -66,6 +69,7 @@ class Window {
   double cursor_x_ = 0.0, cursor_y_ = 0.0;
   bool inside_ = false, focused_ = false;
   int window_width_ = 0, window_height_ = 0;
+  int framebuffer_width_ = 0, framebuffer_height_ = 0;
   bool just_pressed_[5] = {};  // a press and release within one frame still counts as held
   int cursor_shape_ = -1;      // the ImGuiMouseCursor last set
   GLFWcursor* cursors_[9] = {};  // by ImGuiMouseCursor (Arrow .. NotAllowed)
