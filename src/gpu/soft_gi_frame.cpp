@@ -220,7 +220,7 @@ void SoftGiFrame::record(VkCommandBuffer commands, std::uint32_t slot, std::span
   memory_barrier(commands);  // the previous frame on the queue may still read these targets
   PassBarriers barriers;
   for (FramePass pass : frame_pass_order(config_.render.method)) record_pass(commands, slot, pass, draws, barriers);
-  const ResourceAccess copied[] = {reads(&targets_.ldr, VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_BLIT_BIT),
+  const ResourceAccess copied[] = {reads(&targets_.ldr, VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT),
                                    reads(&targets_.hdr, VK_PIPELINE_STAGE_2_COPY_BIT)};
   barriers.before(commands, copied);
   record_output(commands, slot, output);

@@ -151,9 +151,10 @@ class SoftGiFrame {
   Buffer environment_;
   std::uint32_t environment_width_ = 0, environment_height_ = 0;
   std::vector<Slot> slots_;
-  // RGBA8 images of the finished frame for image outputs, UNORM and SRGB (made on first use by
-  // prepare_output, sized like the frame): the copy source of a blit into the caller's image.
-  Image output_unorm_, output_srgb_;
+  // Image outputs (made on first use by prepare_output): frame_output.comp and its buffer of the
+  // caller's texels (sized for the largest image yet), the source of the copy into that image.
+  Pipeline output_pipeline_;
+  Buffer output_pixels_;
 };
 
 }  // namespace proxygi::gpu
