@@ -100,6 +100,7 @@ Status SoftGiFrame::build_targets() {
     *target.buffer = std::move(*made);
   }
   targets_ = std::move(targets);
+  output_staging_ = Image();
   return {};
 }
 

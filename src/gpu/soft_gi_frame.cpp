@@ -206,7 +206,7 @@ void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot_index
           UpsampleCompositePass::Inputs{&slot.constants, &t.position_depth, &t.normal, &t.albedo, &t.receivers,
                                         &t.shaded, &t.direct, &t.indirect, &t.tile_counts, &environment_,
                                         environment_width_, environment_height_,
-                                        config_.width, config_.height},
+                                        config_.width, config_.height, ldr_bgra_},
           UpsampleCompositePass::Outputs{&t.irradiance, &t.hdr, &t.ldr});
       break;
     case FramePass::skin:
@@ -220,7 +220,7 @@ void SoftGiFrame::record(VkCommandBuffer commands, std::uint32_t slot, std::span
   memory_barrier(commands);  // the previous frame on the queue may still read these targets
   PassBarriers barriers;
   for (FramePass pass : frame_pass_order(config_.render.method)) record_pass(commands, slot, pass, draws, barriers);
-  const ResourceAccess copied[] = {reads(&targets_.ldr, VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT),
+  const ResourceAccess copied[] = {reads(&targets_.ldr, VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_BLIT_BIT),
                                    reads(&targets_.hdr, VK_PIPELINE_STAGE_2_COPY_BIT)};
   barriers.before(commands, copied);
   record_output(commands, slot, output);

@@ -151,10 +151,11 @@ class SoftGiFrame {
   Buffer environment_;
   std::uint32_t environment_width_ = 0, environment_height_ = 0;
   std::vector<Slot> slots_;
-  // Image outputs (made on first use by prepare_output): frame_output.comp and its buffer of the
-  // caller's texels (sized for the largest image yet), the source of the copy into that image.
-  Pipeline output_pipeline_;
-  Buffer output_pixels_;
+  // Image outputs (prepare_output): the 8-bit frame is composited in the image's channel order,
+  // so one raw copy lands it at the frame's size; other sizes go through `output_staging_` (the
+  // image's format, the frame's size) and a linear blit.
+  bool ldr_bgra_ = false;
+  Image output_staging_;
 };
 
 }  // namespace proxygi::gpu
