@@ -1,7 +1,7 @@
 // Step 9 of the frame: the finished 8-bit frame into the slot's readback buffers, or into a
 // caller's image: at the frame's size one buffer-to-image copy (the composite wrote the image's
 // channel order), else through a staging image and a linear blit. Copies, not blits, where they
-// can: lavapipe runs vkCmdBlitImage per texel, 512² BGRA took 8× a copy.
+// can: on lavapipe a swizzling vkCmdBlitImage at 512² took 8× an image copy.
 #include "gpu/frame_output.h"
 
 #include "gpu/context.h"
