@@ -5,26 +5,47 @@
 # `proxygi view MODEL.glb` to the first frame, and to proxies when the rig is fitted, for the
 # shared characters (copied to OUT_DIR/models first: the viewer caches rigs next to a model).
 # Needs xvfb-run. Usage: scripts/viewer-measure.sh [OUT_DIR]   (default: viewer-measure-out/)
-# Environment: PROXYGI (default build/release/apps/proxygi), SHARED (default ../shared).
+# Environment: PROXYGI (default build/release/apps/proxygi), SHARED (default ../shared), REPS (3),
+# BEFORE (another build, run interleaved with this one), ONLY_UI=1 (the 512² comparison alone).
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 B=$(realpath "${PROXYGI:-$ROOT/build/release/apps/proxygi}")
 SHARED=$(realpath "${SHARED:-$ROOT/../shared}")
 OUT=${1:-viewer-measure-out}
 mkdir -p "$OUT" && cd "$OUT"
-fps() { /usr/bin/python3 -c "import json,sys; s=json.load(open(sys.argv[1])); print('fps %.2f frame_ms %.1f internal %s frames %d' % (s['fps_mean'], s['frame_ms']['mean'], s['internal'], s['frames']))" "$1"; }
+# One line per run: fps, mean frame time, then where the frames' wall time went (the state file's
+# frame_parts_ms: acquire, render = CPU prepare + submit + ring waits, ui_build, ui_submit,
+# present; on lavapipe the device's work shows as waiting in ui_submit offscreen and in present
+# in a window, where the software swapchain waits for the frame before copying it to X).
+fps() { /usr/bin/python3 -c "
+import json, sys
+s = json.load(open(sys.argv[1]))
+parts = ' '.join('%s %.2f' % (k, v) for k, v in s.get('frame_parts_ms', {}).items() if v >= 0.005)
+print('fps %.2f frame_ms %.1f internal %s frames %d | %s' % (s['fps_mean'], s['frame_ms']['mean'], s['internal'], s['frames'], parts))" "$1"; }
+ratio() { /usr/bin/python3 -c "
+import json, sys
+ms = [json.load(open(f))['frame_ms']['mean'] for f in sys.argv[1:]]
+print('UI + present %+.1f %% (window with UI %.1f ms / offscreen without %.1f ms); present alone %+.1f %%' % (100 * (ms[0] / ms[2] - 1), ms[0], ms[2], 100 * (ms[1] / ms[2] - 1)))" "$@"; }
 load() { cut -d' ' -f1 /proc/loadavg; }
 bench() { echo "bench frame $(date +%T) load $(load): $("$B" bench frame --size 512 --frames 8 --only default 2>&1 | grep -E '^default +image +compute 1/4')"; }
 bench
-for rep in 1 2 3; do
+# BEFORE=other/proxygi: each configuration also runs that build, right before this one.
+BINS=("$B"); [[ -n "${BEFORE:-}" ]] && BINS=("$(realpath "$BEFORE")" "$B")
+REPS=${REPS:-3}
+for rep in $(seq "$REPS"); do
   echo "== rep $rep $(date +%T) load $(load)"
-  xvfb-run -a "$B" view default --play --max-frames 60 --width 512 --height 512 --no-adaptive --state-out w_ui.json >/dev/null 2>&1
-  echo -n "window, UI:         "; fps w_ui.json
-  xvfb-run -a "$B" view default --play --max-frames 60 --width 512 --height 512 --no-adaptive --no-ui --state-out w_noui.json >/dev/null 2>&1
-  echo -n "window, no UI:      "; fps w_noui.json
-  "$B" view default --offscreen --play --max-frames 60 --width 512 --height 512 --no-adaptive --no-ui --state-out off.json >/dev/null 2>&1
-  echo -n "offscreen, no UI:   "; fps off.json
+  for bin in "${BINS[@]}"; do
+    tag=$([[ "$bin" == "$B" ]] && echo "" || echo " (BEFORE)")
+    xvfb-run -a "$bin" view default --play --max-frames 60 --width 512 --height 512 --no-adaptive --state-out w_ui.json >/dev/null 2>&1
+    echo -n "window, UI$tag:         "; fps w_ui.json
+    xvfb-run -a "$bin" view default --play --max-frames 60 --width 512 --height 512 --no-adaptive --no-ui --state-out w_noui.json >/dev/null 2>&1
+    echo -n "window, no UI$tag:      "; fps w_noui.json
+    "$bin" view default --offscreen --play --max-frames 60 --width 512 --height 512 --no-adaptive --no-ui --state-out off.json >/dev/null 2>&1
+    echo -n "offscreen, no UI$tag:   "; fps off.json
+    echo -n "rep $rep$tag: "; ratio w_ui.json w_noui.json off.json
+  done
 done
+[[ -n "${ONLY_UI:-}" ]] && exit 0  # ONLY_UI=1: the 512² comparison alone
 bench
 echo "== 1280x720 $(date +%T) load $(load)"
 xvfb-run -a "$B" view default --play --max-frames 40 --no-adaptive --state-out fixed.json >/dev/null 2>&1

@@ -219,5 +219,7 @@ void main() {
   }
   hdr[index] = vec4(radiance, 1.0);
   uvec3 encoded = uvec3(clamp(vec3(linear_to_srgb(display.r), linear_to_srgb(display.g), linear_to_srgb(display.b)), 0.0, 1.0) * 255.0 + 0.5);
+  // In the caller's channel order (an image output of B8G8R8A8: one raw copy lands it).
+  if (push.ldr_swap_red_blue != 0u) encoded = encoded.bgr;
   ldr[index] = encoded.r | (encoded.g << 8) | (encoded.b << 16) | (255u << 24);
 }

@@ -133,7 +133,7 @@ PROXYGI_CONST(uint, kTonemapClamp, 2u);
 struct CompositePush {
   uint environment_width;   // equirectangular map (sh/environment.h convention), vec4 texels
   uint environment_height;
-  uint padding0;
+  uint ldr_swap_red_blue;   // 1: the packed 8-bit frame in B, G, R, A byte order (FrameOutput)
   uint padding1;
 };
 

@@ -10,9 +10,9 @@
 namespace proxygi::gpu {
 
 // A caller's 2-D color image. Formats: R8G8B8A8 or B8G8R8A8, UNORM or SRGB (the sRGB-encoded bytes
-// of the frame land unchanged in either encoding). Needs VK_IMAGE_USAGE_TRANSFER_DST_BIT. A size
-// other than the frame's is filled by a linear-filtered blit (the viewer's lower internal
-// resolution); the same size is an exact copy.
+// of the frame land unchanged in either encoding). Needs VK_IMAGE_USAGE_TRANSFER_DST_BIT. At the
+// frame's size one buffer-to-image copy (the frame is composited in the image's channel order);
+// another size (the viewer's lower internal resolution) is filled by a linear-filtered blit.
 struct ImageOutput {
   VkImage image = VK_NULL_HANDLE;
   VkFormat format = VK_FORMAT_R8G8B8A8_UNORM;

@@ -100,8 +100,7 @@ Status SoftGiFrame::build_targets() {
     *target.buffer = std::move(*made);
   }
   targets_ = std::move(targets);
-  output_unorm_ = Image();
-  output_srgb_ = Image();
+  output_staging_ = Image();
   return {};
 }
 

@@ -206,7 +206,7 @@ void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot_index
           UpsampleCompositePass::Inputs{&slot.constants, &t.position_depth, &t.normal, &t.albedo, &t.receivers,
                                         &t.shaded, &t.direct, &t.indirect, &t.tile_counts, &environment_,
                                         environment_width_, environment_height_,
-                                        config_.width, config_.height},
+                                        config_.width, config_.height, ldr_bgra_},
           UpsampleCompositePass::Outputs{&t.irradiance, &t.hdr, &t.ldr});
       break;
     case FramePass::skin:

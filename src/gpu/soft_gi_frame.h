@@ -151,9 +151,11 @@ class SoftGiFrame {
   Buffer environment_;
   std::uint32_t environment_width_ = 0, environment_height_ = 0;
   std::vector<Slot> slots_;
-  // RGBA8 images of the finished frame for image outputs, UNORM and SRGB (made on first use by
-  // prepare_output, sized like the frame): the copy source of a blit into the caller's image.
-  Image output_unorm_, output_srgb_;
+  // Image outputs (prepare_output): the 8-bit frame is composited in the image's channel order,
+  // so one raw copy lands it at the frame's size; other sizes go through `output_staging_` (the
+  // image's format, the frame's size) and a linear blit.
+  bool ldr_bgra_ = false;
+  Image output_staging_;
 };
 
 }  // namespace proxygi::gpu

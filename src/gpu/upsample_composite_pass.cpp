@@ -52,7 +52,7 @@ void UpsampleCompositePass::record(const Context& context, VkCommandBuffer comma
       .storage_buffer(kCompositeBindIndirect, *in.indirect)
       .storage_buffer(kCompositeBindTileCounts, *in.tile_counts)
       .push(context, commands, pipeline_);
-  const CompositePush push{in.environment_width, in.environment_height, 0, 0};
+  const CompositePush push{in.environment_width, in.environment_height, in.ldr_bgra ? 1u : 0u, 0};
   pipeline_.push_constants(commands, &push, sizeof(push));
   dispatch_grid(commands, in.width, in.height);
 }

@@ -26,6 +26,7 @@ class UpsampleCompositePass {
     const Buffer* environment = nullptr;    // equirectangular vec4 radiance
     std::uint32_t environment_width = 0, environment_height = 0;
     std::uint32_t width = 0, height = 0;    // display
+    bool ldr_bgra = false;                  // the 8-bit frame in B8G8R8A8 byte order
   };
   struct Outputs {
     const Buffer* irradiance = nullptr;  // vec4 per display pixel (AOV)

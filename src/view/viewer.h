@@ -28,6 +28,24 @@ namespace proxygi::view {
 // Ring slots of the scene renderer: one frame prepared while the previous one renders.
 inline constexpr std::size_t kFramesInFlight = 2;
 
+// Where a frame's wall time goes (the state file's "frame_parts_ms", for scripts/viewer-measure.sh):
+// the loop's steady-clock time between laps, summed per part over the frames the renderer drew.
+enum class FramePart { events, acquire, render, pass_timing, ui_build, ui_submit, screenshot, present, count };
+const char* frame_part_name(FramePart part);
+struct FrameParts {
+  void start() { last = std::chrono::steady_clock::now(); }
+  void lap(FramePart part) {
+    const auto now = std::chrono::steady_clock::now();
+    pending[std::size_t(part)] += std::chrono::duration<double, std::milli>(now - last).count();
+    last = now;
+  }
+  void commit(bool counted);  // adds this frame's laps to the sums when counted, then clears them
+  std::chrono::steady_clock::time_point last;
+  double pending[std::size_t(FramePart::count)] = {};
+  double sum_ms[std::size_t(FramePart::count)] = {};
+  int frames = 0;
+};
+
 class Viewer {
  public:
   explicit Viewer(const ViewerOptions& options);
@@ -95,11 +113,13 @@ class Viewer {
   bool rendered_last_ = false;
   bool first_frame_logged_ = false;
   std::chrono::steady_clock::time_point last_frame_;
+  double ui_dt_s_ = 0.0;  // wall time since the previous frame (ImGui's step)
   std::chrono::steady_clock::time_point last_pass_timing_;
   bool want_pass_timing_ = true;
   std::vector<PassTime> passes_;
   std::string pass_clock_;  // how passes_ were measured (HUD)
   FrameTimes times_;
+  FrameParts parts_;
   std::string save_path_ = "viewer_scene.json";
   std::string open_path_;
 };

@@ -99,6 +99,10 @@ Status Viewer::write_state() const {
   json["frames_without_proxies"] = frames_without_proxies_;
   json["fps_mean"] = times_.mean() > 0.0 ? 1000.0 / times_.mean() : 0.0;
   json["frame_ms"] = {{"mean", times_.mean()}, {"min", times_.min()}, {"max", times_.max()}};
+  nlohmann::json parts = nlohmann::json::object();
+  for (std::size_t p = 0; p < std::size_t(FramePart::count); ++p)
+    parts[frame_part_name(FramePart(p))] = parts_.frames ? parts_.sum_ms[p] / parts_.frames : 0.0;
+  json["frame_parts_ms"] = parts;  // mean wall time per loop part (FramePart)
   json["display"] = {display_width_, display_height_};
   json["internal"] = {internal_width_, internal_height_};
   json["swapchain_recreations"] = swapchain_ ? swapchain_->recreations() : 0;

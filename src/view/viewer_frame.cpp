@@ -6,7 +6,6 @@
 #include <thread>
 
 #include <imgui.h>
-#include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_vulkan.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -37,6 +36,29 @@ const char* present_name(VkPresentModeKHR mode) {
 }
 
 }  // namespace
+
+const char* frame_part_name(FramePart part) {
+  switch (part) {
+    case FramePart::events: return "events";
+    case FramePart::acquire: return "acquire";
+    case FramePart::render: return "render";
+    case FramePart::pass_timing: return "pass_timing";
+    case FramePart::ui_build: return "ui_build";
+    case FramePart::ui_submit: return "ui_submit";
+    case FramePart::screenshot: return "screenshot";
+    case FramePart::present: return "present";
+    case FramePart::count: break;
+  }
+  return "?";
+}
+
+void FrameParts::commit(bool counted) {
+  for (std::size_t p = 0; p < std::size_t(FramePart::count); ++p) {
+    if (counted) sum_ms[p] += pending[p];
+    pending[p] = 0.0;
+  }
+  frames += counted ? 1 : 0;
+}
 
 // Poses the world at the core's time; the scene camera goes to the core (for the free camera's
 // start), and the free camera replaces it when on. The renderer draws this state as it is.
@@ -117,6 +139,7 @@ Status Viewer::render_into(const TargetImage& target) {
       (want_pass_timing_ || std::chrono::steady_clock::now() - last_pass_timing_ > std::chrono::duration<double>(kPassTimingPeriodS))) {
     want_pass_timing_ = false;
     last_pass_timing_ = std::chrono::steady_clock::now();
+    parts_.lap(FramePart::render);
     if (Status s = finish_all(); !s) return s;  // pass timing needs an idle ring
     if (auto timings = renderer_->time_passes(core_->state().playback.frame(), gpu::PassClock::timestamps_if_valid)) {
       passes_.clear();
@@ -130,6 +153,7 @@ Status Viewer::render_into(const TargetImage& target) {
       for (std::size_t p = 0; p < std::size_t(gpu::FramePass::count); ++p)
         if (timings->milliseconds[p] > 0.0) passes_.push_back({gpu::frame_pass_name(gpu::FramePass(p)), timings->milliseconds[p]});
     }
+    parts_.lap(FramePart::pass_timing);
   }
   return {};
 }
@@ -176,7 +200,7 @@ Status Viewer::finish_ui(const TargetImage& target, VkSemaphore signal, VkImageL
                        !(!screenshots_.empty() && !screenshots_.front().with_ui);
   ImGuiIO& io = ImGui::GetIO();
   if (window_) {
-    ImGui_ImplGlfw_NewFrame();
+    window_->new_imgui_frame(target.width, target.height, ui_dt_s_);
   } else {
     io.DisplaySize = {float(target.width), float(target.height)};
     io.DeltaTime = float(step_s_);
@@ -190,7 +214,9 @@ Status Viewer::finish_ui(const TargetImage& target, VkSemaphore signal, VkImageL
     requests = draw_ui(ui);
   }
   ImGui::Render();
+  parts_.lap(FramePart::ui_build);
   if (Status s = ui_pass_->submit(target, with_ui ? ImGui::GetDrawData() : nullptr, signal); !s) return s;
+  parts_.lap(FramePart::ui_submit);
   if (!screenshots_.empty()) {
     if (Status s = ui_pass_->wait(); !s) return s;
     auto rgba = read_target(*context_, target, final_layout);
@@ -198,6 +224,7 @@ Status Viewer::finish_ui(const TargetImage& target, VkSemaphore signal, VkImageL
     if (Status s = write_screenshot(*rgba, target.width, target.height, screenshots_.front().path); !s)
       core_->state().message = s.message();
     screenshots_.pop_front();
+    parts_.lap(FramePart::screenshot);
   }
   if (requests.screenshot) screenshots_.push_back(ScreenshotEvent{"", true});
   if (requests.time_passes) want_pass_timing_ = true;
@@ -213,8 +240,11 @@ Status Viewer::frame() {
   const double wall_dt = std::min(std::chrono::duration<double>(now - last_frame_).count(), 0.25);
   const double frame_ms = std::chrono::duration<double, std::milli>(now - last_frame_).count();
   last_frame_ = now;
+  ui_dt_s_ = frame_ms / 1000.0;
   // Only frames the renderer drew count (not the placeholder frames while the first scene loads).
   if (rendered_last_) times_.add(frame_ms), adapt_resolution(frame_ms);
+  parts_.commit(rendered_last_);
+  parts_.start();
   rendered_last_ = false;
 
   std::vector<Event> events = window_ ? window_->poll() : std::vector<Event>{};
@@ -245,11 +275,13 @@ Status Viewer::frame() {
   for (const Event& event : events) dispatch(event);
   if (core_)
     for (const Event& event : core_->take_requests()) dispatch(event);
+  parts_.lap(FramePart::events);
 
   if (!window_) {
     TargetImage target{offscreen_->handle(), offscreen_->view(), offscreen_->format(), offscreen_->width(),
                        offscreen_->height()};
     if (Status s = render_into(target); !s) return s;
+    parts_.lap(FramePart::render);
     return finish_ui(target, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
   }
 
@@ -273,10 +305,13 @@ Status Viewer::frame() {
   }
   const std::uint32_t index = (*acquired)->index;
   const TargetImage& target = swapchain_->image(index);
+  parts_.lap(FramePart::acquire);
   if (Status s = render_into(target); !s) return s;
+  parts_.lap(FramePart::render);
   if (Status s = finish_ui(target, swapchain_->render_done(index), VK_IMAGE_LAYOUT_PRESENT_SRC_KHR); !s) return s;
   auto presented = swapchain_->present(index, swapchain_->render_done(index));
   if (!presented) return presented.error();
+  parts_.lap(FramePart::present);
   if (!*presented || (*acquired)->stale) swapchain_stale_ = true;
   return {};
 }

@@ -5,6 +5,9 @@
 #include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
 
+#include <cfloat>
+#include <cstring>
+
 #include "gpu/vulkan_check.h"
 
 namespace proxygi::view {
@@ -65,11 +68,23 @@ Result<std::unique_ptr<Window>> Window::create(int width, int height, const std:
   glfwSetCursorPosCallback(window->window_, on_cursor);
   glfwSetScrollCallback(window->window_, on_scroll);
   glfwSetDropCallback(window->window_, on_drop);
+  glfwSetCursorEnterCallback(window->window_, on_enter);
+  glfwSetWindowFocusCallback(window->window_, on_focus);
+  glfwSetWindowSizeCallback(window->window_, on_size);
+  glfwSetFramebufferSizeCallback(window->window_, on_framebuffer_size);
+  glfwGetWindowSize(window->window_, &window->window_width_, &window->window_height_);
+  glfwGetFramebufferSize(window->window_, &window->framebuffer_width_, &window->framebuffer_height_);
+  glfwGetCursorPos(window->window_, &window->cursor_x_, &window->cursor_y_);
+  window->focused_ = glfwGetWindowAttrib(window->window_, GLFW_FOCUSED) != 0;
+  window->inside_ = window->cursor_x_ >= 0 && window->cursor_y_ >= 0 && window->cursor_x_ < window->window_width_ &&
+                    window->cursor_y_ < window->window_height_;
   return window;
 }
 
 Window::~Window() {
   if (imgui_) ImGui_ImplGlfw_Shutdown();
+  for (GLFWcursor* cursor : cursors_)
+    if (cursor) glfwDestroyCursor(cursor);
   if (window_) glfwDestroyWindow(window_);
   glfwTerminate();
 }
@@ -91,6 +106,38 @@ Result<VkSurfaceKHR> Window::create_surface(VkInstance instance) const {
 void Window::init_imgui() {
   ImGui_ImplGlfw_InitForVulkan(window_, true);  // chains to the callbacks above
   imgui_ = true;
+  // GLFW 3.3's standard shapes; ImGui's others fall back to the arrow, as in its backend.
+  cursors_[ImGuiMouseCursor_Arrow] = glfwCreateStandardCursor(GLFW_ARROW_CURSOR);
+  cursors_[ImGuiMouseCursor_TextInput] = glfwCreateStandardCursor(GLFW_IBEAM_CURSOR);
+  cursors_[ImGuiMouseCursor_ResizeNS] = glfwCreateStandardCursor(GLFW_VRESIZE_CURSOR);
+  cursors_[ImGuiMouseCursor_ResizeEW] = glfwCreateStandardCursor(GLFW_HRESIZE_CURSOR);
+  cursors_[ImGuiMouseCursor_Hand] = glfwCreateStandardCursor(GLFW_HAND_CURSOR);
+}
+
+void Window::new_imgui_frame(std::uint32_t width, std::uint32_t height, double dt_s) {
+  static_assert(ImGuiMouseCursor_COUNT <= int(sizeof(cursors_) / sizeof(cursors_[0])));
+  ImGuiIO& io = ImGui::GetIO();
+  io.DisplaySize = {float(window_width_ > 0 ? window_width_ : int(width)), float(window_height_ > 0 ? window_height_ : int(height))};
+  io.DisplayFramebufferScale = {float(width) / io.DisplaySize.x, float(height) / io.DisplaySize.y};
+  io.DeltaTime = dt_s > 0.0 ? float(dt_s) : 1.0f / 60.0f;
+  for (int i = 0; i < 5; ++i) {  // GLFW keeps the buttons' state: no server request
+    io.MouseDown[i] = just_pressed_[i] || glfwGetMouseButton(window_, i) == GLFW_PRESS;
+    just_pressed_[i] = false;
+  }
+  // Outside the window the last position inside stands while it has the focus (X sends motion
+  // outside only during a drag), as the backend's pointer query would give it then.
+  io.MousePos = inside_ || focused_ ? ImVec2(float(cursor_x_), float(cursor_y_)) : ImVec2(-FLT_MAX, -FLT_MAX);
+  std::memset(io.NavInputs, 0, sizeof(io.NavInputs));  // no gamepad navigation
+  if (io.ConfigFlags & ImGuiConfigFlags_NoMouseCursorChange) return;
+  const int shape = ImGui::GetMouseCursor();
+  if (shape == cursor_shape_) return;  // set only on a change: each set is a request to the server
+  cursor_shape_ = shape;
+  if (shape == ImGuiMouseCursor_None || io.MouseDrawCursor) {
+    glfwSetInputMode(window_, GLFW_CURSOR, GLFW_CURSOR_HIDDEN);
+  } else {
+    glfwSetCursor(window_, cursors_[shape] ? cursors_[shape] : cursors_[ImGuiMouseCursor_Arrow]);
+    glfwSetInputMode(window_, GLFW_CURSOR, GLFW_CURSOR_NORMAL);
+  }
 }
 
 std::vector<Event> Window::poll() {
@@ -101,7 +148,9 @@ std::vector<Event> Window::poll() {
 }
 
 bool Window::should_close() const { return glfwWindowShouldClose(window_); }
-void Window::framebuffer_size(int& width, int& height) const { glfwGetFramebufferSize(window_, &width, &height); }
+void Window::framebuffer_size(int& width, int& height) const {
+  width = framebuffer_width_, height = framebuffer_height_;
+}
 void Window::set_title(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
 
 void Window::resize(int width, int height) {
@@ -119,6 +168,7 @@ void Window::on_key(GLFWwindow* window, int key, int, int action, int mods) {
 
 void Window::on_mouse_button(GLFWwindow* window, int button, int action, int) {
   Window* me = self(window);
+  if (action == GLFW_PRESS && button >= 0 && button < 5) me->just_pressed_[button] = true;
   if (action == GLFW_PRESS) {
     if (me->imgui_ && ImGui::GetIO().WantCaptureMouse) return;
     if (me->dragging_ < 0) me->dragging_ = button;
@@ -130,6 +180,7 @@ void Window::on_mouse_button(GLFWwindow* window, int button, int action, int) {
 
 void Window::on_cursor(GLFWwindow* window, double x, double y) {
   Window* me = self(window);
+  me->cursor_x_ = x, me->cursor_y_ = y;
   if (me->dragging_ < 0) return;
   const float dx = float(x - me->last_x_), dy = float(y - me->last_y_);
   me->last_x_ = x, me->last_y_ = y;
@@ -145,6 +196,16 @@ void Window::on_scroll(GLFWwindow* window, double, double dy) {
   Window* me = self(window);
   if (me->imgui_ && ImGui::GetIO().WantCaptureMouse) return;
   me->events_.push_back(ScrollEvent{float(dy)});
+}
+
+void Window::on_enter(GLFWwindow* window, int entered) { self(window)->inside_ = entered != 0; }
+void Window::on_focus(GLFWwindow* window, int focused) { self(window)->focused_ = focused != 0; }
+void Window::on_size(GLFWwindow* window, int width, int height) {
+  self(window)->window_width_ = width, self(window)->window_height_ = height;
+}
+
+void Window::on_framebuffer_size(GLFWwindow* window, int width, int height) {
+  self(window)->framebuffer_width_ = width, self(window)->framebuffer_height_ = height;
 }
 
 void Window::on_drop(GLFWwindow* window, int count, const char** paths) {
