@@ -22,7 +22,9 @@
 //     protrusion is at most tolerance × diagonal or max_spheres is reached. A bone with no
 //     points gets no sphere. Spheres come within surface_slack × tolerance × diagonal of their
 //     points rather than bounding them, so a limb becomes a chain of spheres thinner than it
-//     (coverage, measured at the tolerance, stays whole).
+//     (coverage, measured at the tolerance, stays whole). Once no protrusion exceeds the
+//     tolerance, the sphere with the largest outside volume is split while the spheres' outside
+//     volume exceeds outside_target of their volume (bones warned flat or open excepted).
 //  5. Teleport (VSSA): while it lowers the summed outside volume, the sphere with the largest
 //     outside volume is split and, to keep the count, the sphere whose removal costs least
 //     (keeping every protrusion within the tolerance) is dropped, each bone re-clustered.
