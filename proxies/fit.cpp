@@ -49,6 +49,53 @@ glm::vec3 principal_extents(std::span<const glm::vec3> points, const std::vector
   return extents;
 }
 
+// VSSA's teleport over the whole character: split the sphere with the largest outside volume
+// and drop the sphere whose removal costs least, while that lowers the summed outside volume
+// and keeps every protrusion within max(tolerance, the worst before). Deterministic: ties go to
+// the lower set and sphere index.
+void teleport(std::vector<std::unique_ptr<BoneSphereSet>>& sets, float tau, const FitOptions& options) {
+  const int lloyd = options.lloyd_iterations;
+  for (int round = 0; round < options.teleport_rounds; ++round) {
+    float worst_all = 0.0f;
+    for (const auto& set : sets) worst_all = std::max(worst_all, set->worst_protrusion());
+    const float allowed = std::max(tau, worst_all);
+    // The split: the splittable sphere with the largest outside volume.
+    int split_set = -1, split_sphere = -1;
+    float split_outside = 0.0f;
+    for (std::size_t i = 0; i < sets.size(); ++i) {
+      const int w = sets[i]->worst();
+      if (w < 0) continue;
+      for (std::size_t j = 0; j < sets[i]->spheres().size(); ++j) {
+        const float o = sets[i]->spheres()[j].outside;
+        if (o > split_outside) split_outside = o, split_set = int(i), split_sphere = int(j);
+      }
+    }
+    if (split_set < 0) return;
+    BoneSphereSet split = *sets[std::size_t(split_set)];
+    if (!split.split(split_sphere, lloyd) || split.worst_protrusion() > allowed) return;
+    const float gain = sets[std::size_t(split_set)]->outside_volume() - split.outside_volume();
+    if (!(gain > 0.0f)) return;
+    // The removal: cheapest over every set of two or more spheres (the split set as split).
+    int remove_set = -1;
+    float best_cost = gain;
+    std::unique_ptr<BoneSphereSet> best;
+    for (std::size_t i = 0; i < sets.size(); ++i) {
+      const BoneSphereSet& base = int(i) == split_set ? split : *sets[i];
+      if (base.spheres().size() < 2) continue;
+      for (std::size_t j = 0; j < base.spheres().size(); ++j) {
+        auto candidate = std::make_unique<BoneSphereSet>(base);
+        candidate->remove(int(j), lloyd);
+        if (candidate->worst_protrusion() > allowed) continue;
+        const float cost = candidate->outside_volume() - base.outside_volume();
+        if (cost < best_cost) best_cost = cost, remove_set = int(i), best = std::move(candidate);
+      }
+    }
+    if (remove_set < 0) return;  // no removal is cheaper than the split gains
+    if (remove_set != split_set) *sets[std::size_t(split_set)] = std::move(split);
+    *sets[std::size_t(remove_set)] = std::move(*best);
+  }
+}
+
 }  // namespace
 
 Status FitProxiesJob::validate() const {
@@ -60,6 +107,8 @@ Status FitProxiesJob::validate() const {
   if (options.surface_samples < 1 || options.interior_samples < 0 || options.grid_resolution < 8 ||
       options.lloyd_iterations < 1)
     return make_error("fit: sample counts, grid resolution (>= 8) or Lloyd iterations out of range");
+  if (!(options.surface_slack >= 0.0f && options.surface_slack < 1.0f) || options.teleport_rounds < 0)
+    return make_error("fit: surface_slack must be in [0, 1) and teleport_rounds >= 0");
   return {};
 }
 
@@ -124,10 +173,11 @@ Status FitProxiesJob::run() const {
 
   const std::vector<glm::vec3> ball = unit_ball_points(96);
   const std::vector<glm::vec3> directions = fibonacci_directions(128);
-  const SphereObjective objective{&grid, ball, directions};
+  const SphereObjective objective{&grid, ball, directions, options.surface_slack * tau, tau};
 
   std::vector<int> bones;
   std::vector<std::unique_ptr<BoneSphereSet>> sets;
+  std::vector<bool> tighten;  // not warned flat or open: the outside-volume splits may work on it
   for (std::size_t bone = 0; bone < members.size(); ++bone) {
     if (members[bone].empty()) continue;
     // Warnings for regions spheres can only over-cover.
@@ -142,36 +192,62 @@ Status FitProxiesJob::run() const {
       std::snprintf(line, sizeof line, ": no interior volume (open or flat surface, thickness %.4g m): spheres over-cover it",
                     double(extents[0]));
       out.rig.warnings.push_back(bone_label(ch, int(bone)) + line);
+      tighten.push_back(false);
     } else if (extents[0] < kFlatRatio * extents[1] && extents[1] > tau) {
       std::snprintf(line, sizeof line, ": thin or flat region (%.4g m thick, %.4g m wide): spheres over-cover it",
                     double(extents[0]), double(extents[1]));
       out.rig.warnings.push_back(bone_label(ch, int(bone)) + line);
+      tighten.push_back(false);
+    } else {
+      tighten.push_back(true);
     }
     bones.push_back(int(bone));
     sets.push_back(std::make_unique<BoneSphereSet>(points, members[bone], objective));
   }
 
-  // Greedy refinement: always split the globally worst sphere.
+  // Greedy refinement. First the globally worst protrusion above the tolerance; then, while the
+  // spheres of bones that are neither flat nor open (spheres can only over-cover those) have
+  // more than outside_target of their volume outside the mesh, the one with the largest outside
+  // volume. A failed split, or an outside split that does not lower its bone's outside volume,
+  // counts against the bone (three and it is left alone).
   auto count = [&] {
     std::size_t total = 0;
     for (const auto& set : sets) total += set->spheres().size();
     return total;
   };
-  std::vector<int> failures(sets.size(), 0);
+  std::vector<int> failures(sets.size(), 0), outside_failures(sets.size(), 0);
   for (int guard = 0; count() < std::size_t(options.max_spheres) && guard < 8 * options.max_spheres; ++guard) {
     int worst_set = -1;
     for (std::size_t i = 0; i < sets.size(); ++i)
       if (failures[i] < 3 && (worst_set < 0 || sets[i]->worst_error() > sets[std::size_t(worst_set)]->worst_error()))
         worst_set = int(i);
-    if (worst_set < 0 || sets[std::size_t(worst_set)]->worst_error() <= tau) break;
-    BoneSphereSet& set = *sets[std::size_t(worst_set)];
-    const int worst = set.worst();
-    if (worst < 0 || !set.split(worst, options.lloyd_iterations)) ++failures[std::size_t(worst_set)];
+    if (worst_set >= 0 && sets[std::size_t(worst_set)]->worst_error() > tau) {
+      BoneSphereSet& set = *sets[std::size_t(worst_set)];
+      const int worst = set.worst();
+      if (worst < 0 || !set.split(worst, options.lloyd_iterations)) ++failures[std::size_t(worst_set)];
+      continue;
+    }
+    float outside = 0.0f, volume = 0.0f;
+    int best_set = -1, best_sphere = -1;
+    for (std::size_t i = 0; i < sets.size(); ++i) {
+      if (!tighten[i]) continue;
+      outside += sets[i]->outside_volume(), volume += sets[i]->volume();
+      const int j = sets[i]->most_outside();
+      if (outside_failures[i] < 3 && j >= 0 &&
+          (best_set < 0 || sets[i]->spheres()[std::size_t(j)].outside > sets[std::size_t(best_set)]->spheres()[std::size_t(best_sphere)].outside))
+        best_set = int(i), best_sphere = j;
+    }
+    if (best_set < 0 || !(outside > options.outside_target * volume)) break;
+    BoneSphereSet& set = *sets[std::size_t(best_set)];
+    const float before = set.outside_volume();
+    if (!set.split(best_sphere, options.lloyd_iterations) || !(set.outside_volume() < before)) ++outside_failures[std::size_t(best_set)];
   }
+  teleport(sets, tau, options);
 
   // Rig spheres in bone space, with albedo and mean weights from what each sphere stands for.
   out.rig.tolerance = options.tolerance;
   out.rig.max_spheres = options.max_spheres;
+  out.rig.fit_version = kFitVersion;
   out.rig.diagonal = out.diagonal;
   for (std::size_t i = 0; i < sets.size(); ++i) {
     const int bone = bones[i];

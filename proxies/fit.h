@@ -20,8 +20,15 @@
 //  4. Every bone with points starts with one sphere. Then, over the whole character, the sphere
 //     with the largest protrusion is split and its bone re-clustered, until every sphere's
 //     protrusion is at most tolerance × diagonal or max_spheres is reached. A bone with no
-//     points gets no sphere.
-//  5. Per sphere: albedo = mean linear base color of its surface samples; mean skin weights of
+//     points gets no sphere. Spheres come within surface_slack × tolerance × diagonal of their
+//     points rather than bounding them, so a limb becomes a chain of spheres thinner than it
+//     (coverage, measured at the tolerance, stays whole). Once no protrusion exceeds the
+//     tolerance, the sphere with the largest outside volume is split while the spheres' outside
+//     volume exceeds outside_target of their volume (bones warned flat or open excepted).
+//  5. Teleport (VSSA): while it lowers the summed outside volume, the sphere with the largest
+//     outside volume is split and, to keep the count, the sphere whose removal costs least
+//     (keeping every protrusion within the tolerance) is dropped, each bone re-clustered.
+//  6. Per sphere: albedo = mean linear base color of its surface samples; mean skin weights of
 //     its surface samples and vertices (largest four, renormalized); center and radius mapped
 //     to bone space with the bone's bind_to_bone matrix (radius scaled by its largest axis).
 // Warnings (never errors) name bones whose region is flat (smallest principal extent below a
@@ -39,6 +46,9 @@
 
 namespace proxygi::proxies {
 
+// The fit algorithm's version, stored in rigs; a cached rig of another version is refitted.
+inline constexpr int kFitVersion = 2;
+
 struct FitOptions {
   float tolerance = 0.05f;    // allowed protrusion, relative to the bounding-box diagonal (> 0)
   int max_spheres = 96;       // cap over the whole character (>= 1)
@@ -46,6 +56,9 @@ struct FitOptions {
   int interior_samples = 8000;// cap on interior points
   int grid_resolution = 100;  // distance-grid cells along the diagonal
   int lloyd_iterations = 6;   // re-clustering passes after each split
+  float surface_slack = 0.5f; // how far a point may lie outside its sphere, × tolerance, [0, 1)
+  float outside_target = 0.2f;  // split further while the spheres' outside volume share exceeds it
+  int teleport_rounds = 64;   // cap on teleport steps (0: none)
   std::uint64_t seed = 1;
 };
 

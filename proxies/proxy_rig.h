@@ -63,6 +63,7 @@ struct ProxyRig {
   Binding binding = Binding::blended;
   float tolerance = 0.0f;         // relative to the bind-pose bounding-box diagonal
   int max_spheres = 0;
+  int fit_version = 0;            // kFitVersion of the fit that made it (0: unknown)
   float diagonal = 0.0f;          // bind-pose bounding-box diagonal, meters
   std::vector<ProxySphere> spheres;
   // Informational, written by fit and shown by `info`; not used by tracking.

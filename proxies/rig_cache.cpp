@@ -14,7 +14,7 @@ namespace {
 
 bool settings_match(const ProxyRig& rig, const RigRequest& request) {
   return rig.model_hash == request.model_hash && rig.tolerance == request.options.tolerance &&
-         rig.max_spheres == request.options.max_spheres;
+         rig.max_spheres == request.options.max_spheres && rig.fit_version == kFitVersion;
 }
 
 Result<ProxyRig> fit_rig(const anim::Character& character, const RigRequest& request) {

@@ -155,6 +155,7 @@ std::string rig_to_json(const ProxyRig& rig, const anim::Character& character) {
   out += "  \"binding\": \"" + std::string(binding_name(rig.binding)) + "\",\n";
   out += "  \"tolerance\": " + fmt(rig.tolerance) + ",\n  \"max_spheres\": " + std::to_string(rig.max_spheres) + ",\n";
   out += "  \"diagonal_m\": " + fmt(rig.diagonal) + ",\n";
+  if (rig.fit_version > 0) out += "  \"fit_version\": " + std::to_string(rig.fit_version) + ",\n";
   out += "  \"spheres\": [\n";
   for (std::size_t i = 0; i < rig.spheres.size(); ++i) {
     const ProxySphere& s = rig.spheres[i];
@@ -221,6 +222,7 @@ Result<ProxyRig> parse_rig_document(std::string_view text, const std::string& fi
   if (root.contains("tolerance") && root["tolerance"].is_number()) rig.tolerance = root["tolerance"].get<float>();
   if (root.contains("max_spheres") && root["max_spheres"].is_number_integer()) rig.max_spheres = root["max_spheres"].get<int>();
   if (root.contains("diagonal_m") && root["diagonal_m"].is_number()) rig.diagonal = root["diagonal_m"].get<float>();
+  if (root.contains("fit_version") && root["fit_version"].is_number_integer()) rig.fit_version = root["fit_version"].get<int>();
   if (!root.contains("spheres") || !root["spheres"].is_array()) return top("\"spheres\" must be an array");
   // The informational "fit" block is read leniently: a hand edit there never blocks loading.
   if (root.contains("fit") && root["fit"].is_object()) {

@@ -8,15 +8,23 @@ namespace proxygi::proxies {
 namespace {
 
 constexpr std::size_t kSearchMembers = 384;
+// Assignment passes after each re-clustering (each one refits every sphere of the bone).
+constexpr int kAssignIterations = 4;
+// A sphere never shrinks below this share of the distance to its farthest member.
+constexpr float kMinRadiusShare = 0.5f;
 
-float farthest_distance(std::span<const glm::vec3> points, const std::vector<std::uint32_t>& members,
-                        const glm::vec3& center) {
-  float best = 0.0f;
+
+// The radius that brings every member within the slack: max |p − c| − slack, at least
+// kMinRadiusShare of the farthest distance.
+float cover_radius(std::span<const glm::vec3> points, const std::vector<std::uint32_t>& members, const glm::vec3& center,
+                   const SphereObjective& objective) {
+  float farthest2 = 0.0f;
   for (std::uint32_t m : members) {
     const glm::vec3 d = points[m] - center;
-    best = std::max(best, glm::dot(d, d));
+    farthest2 = std::max(farthest2, glm::dot(d, d));
   }
-  return std::sqrt(best);
+  const float farthest = std::sqrt(farthest2);
+  return std::max(farthest - objective.slack, kMinRadiusShare * farthest);
 }
 
 glm::vec3 centroid_of(std::span<const glm::vec3> points, const std::vector<std::uint32_t>& members) {
@@ -85,7 +93,7 @@ ClusterSphere fit_cluster(std::span<const glm::vec3> points, std::vector<std::ui
   const std::size_t stride = (members.size() + kSearchMembers - 1) / kSearchMembers;
   for (std::size_t i = 0; i < members.size(); i += std::max<std::size_t>(stride, 1)) subset.push_back(members[i]);
   auto cost = [&](const glm::vec3& c, float& radius) {
-    radius = farthest_distance(points, subset, c);
+    radius = cover_radius(points, subset, c, objective);
     const float volume = 4.0f / 3.0f * std::numbers::pi_v<float> * radius * radius * radius;
     return objective.outside_volume(c, radius) + 1e-3f * volume;
   };
@@ -109,9 +117,10 @@ ClusterSphere fit_cluster(std::span<const glm::vec3> points, std::vector<std::ui
     if (!improved) step *= 0.5f;
   }
   sphere.center = center;
-  sphere.radius = std::max(farthest_distance(points, members, center), 1e-6f);
+  sphere.radius = std::max(cover_radius(points, members, center, objective), 1e-6f);
   sphere.members = std::move(members);
   sphere.protrusion = objective.protrusion(sphere.center, sphere.radius);
+  sphere.outside = objective.outside_volume(sphere.center, sphere.radius);
   return sphere;
 }
 
@@ -127,6 +136,31 @@ int BoneSphereSet::worst() const {
   for (std::size_t i = 0; i < spheres_.size(); ++i)
     if (splittable_[i] && (worst < 0 || spheres_[i].protrusion > spheres_[std::size_t(worst)].protrusion)) worst = int(i);
   return worst;
+}
+
+float BoneSphereSet::worst_protrusion() const {
+  float worst = 0.0f;
+  for (const ClusterSphere& s : spheres_) worst = std::max(worst, s.protrusion);
+  return worst;
+}
+
+float BoneSphereSet::outside_volume() const {
+  float sum = 0.0f;
+  for (const ClusterSphere& s : spheres_) sum += s.outside;
+  return sum;
+}
+
+int BoneSphereSet::most_outside() const {
+  int best = -1;
+  for (std::size_t i = 0; i < spheres_.size(); ++i)
+    if (splittable_[i] && (best < 0 || spheres_[i].outside > spheres_[std::size_t(best)].outside)) best = int(i);
+  return best;
+}
+
+float BoneSphereSet::volume() const {
+  float sum = 0.0f;
+  for (const ClusterSphere& s : spheres_) sum += 4.0f / 3.0f * std::numbers::pi_v<float> * s.radius * s.radius * s.radius;
+  return sum;
 }
 
 float BoneSphereSet::worst_error() const {
@@ -175,6 +209,12 @@ bool BoneSphereSet::split(int index, int lloyd_iterations) {
   return spheres_.size() > before;
 }
 
+void BoneSphereSet::remove(int index, int lloyd_iterations) {
+  spheres_.erase(spheres_.begin() + index);
+  splittable_.erase(splittable_.begin() + index);
+  relax(std::max(lloyd_iterations, 1));
+}
+
 void BoneSphereSet::relax(int iterations) {
   std::vector<std::vector<std::uint32_t>> clusters(spheres_.size());
   for (int iteration = 0; iteration < iterations; ++iteration) {
@@ -192,15 +232,51 @@ void BoneSphereSet::relax(int iterations) {
     for (std::size_t i = 0; i < spheres_.size(); ++i)
       if (!clusters[i].empty()) spheres_[i].centroid = centroid_of(points_, clusters[i]);
   }
+  refit(std::move(clusters));
+  assign(kAssignIterations);
+}
+
+void BoneSphereSet::refit(std::vector<std::vector<std::uint32_t>> clusters) {
   std::vector<ClusterSphere> fitted;
   std::vector<bool> splittable;
-  for (std::size_t i = 0; i < spheres_.size(); ++i) {
-    if (clusters[i].empty()) continue;  // a centroid that lost every point disappears
+  for (std::size_t i = 0; i < clusters.size(); ++i) {
+    if (clusters[i].empty()) continue;  // a sphere that lost every point disappears
     splittable.push_back(clusters[i].size() >= 2);
     fitted.push_back(fit_cluster(points_, std::move(clusters[i]), *objective_));
   }
   spheres_ = std::move(fitted);
   splittable_ = std::move(splittable);
+}
+
+void BoneSphereSet::assign(int iterations) {
+  if (spheres_.size() < 2) return;
+  for (int iteration = 0; iteration < iterations; ++iteration) {
+    std::vector<std::vector<std::uint32_t>> clusters(spheres_.size());
+    bool moved = false;
+    for (std::size_t i = 0; i < spheres_.size(); ++i)
+      for (std::uint32_t m : spheres_[i].members) {
+        const glm::vec3 p = points_[m];
+        std::size_t best = i;
+        float best_gap = glm::length(p - spheres_[i].center) - spheres_[i].radius;
+        for (std::size_t j = 0; j < spheres_.size(); ++j) {
+          const float gap = glm::length(p - spheres_[j].center) - spheres_[j].radius;
+          if (gap < best_gap) best_gap = gap, best = j;
+        }
+        moved = moved || best != i;
+        clusters[best].push_back(m);
+      }
+    if (!moved) return;
+    for (auto& c : clusters) std::sort(c.begin(), c.end());  // member order independent of the pass
+    const std::vector<ClusterSphere> before = spheres_;
+    const std::vector<bool> before_splittable = splittable_;
+    const float outside = outside_volume(), worst = worst_protrusion();
+    refit(std::move(clusters));
+    if (!(outside_volume() < outside) || worst_protrusion() > std::max(worst, objective_->tolerance)) {
+      spheres_ = before;
+      splittable_ = before_splittable;
+      return;
+    }
+  }
 }
 
 }  // namespace proxygi::proxies
