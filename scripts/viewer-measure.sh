@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The viewer's figures of README "Viewer" (issue 13): the UI + present cost against the offscreen
-# viewer and `bench frame` at 512², three interleaved repetitions so each ratio comes from runs
+# viewer and against `bench frame` (the issue's baseline) at 512², three interleaved repetitions so each ratio comes from runs
 # seconds apart; fps at 1280×720 with and without the adaptive resolution; time from
 # `proxygi view MODEL.glb` to the first frame, and to proxies when the rig is fitted, for the
 # shared characters (copied to OUT_DIR/models first: the viewer caches rigs next to a model).
@@ -43,6 +43,12 @@ for rep in $(seq "$REPS"); do
     "$bin" view default --offscreen --play --max-frames 60 --width 512 --height 512 --no-adaptive --no-ui --state-out off.json >/dev/null 2>&1
     echo -n "offscreen, no UI$tag:   "; fps off.json
     echo -n "rep $rep$tag: "; ratio w_ui.json w_noui.json off.json
+    # The issue's own baseline: `bench frame`'s pipelined loop, same size and setting, same minute.
+    bench_ms=$("$bin" bench frame --size 512 --frames 30 --only default 2>&1 | awk '/^default +image +compute 1\/4/ {print $8}')
+    /usr/bin/python3 -c "
+import json, sys
+ui = json.load(open('w_ui.json'))['frame_ms']['mean']
+print('rep $rep$tag: window with UI %.1f ms / bench frame %.1f ms: %+.1f %%' % (ui, float(sys.argv[1]), 100 * (ui / float(sys.argv[1]) - 1)))" "$bench_ms"
   done
 done
 [[ -n "${ONLY_UI:-}" ]] && exit 0  # ONLY_UI=1: the 512² comparison alone
