@@ -39,6 +39,7 @@
 #include <vector>
 
 #include "anim/character.h"
+#include "proxies/quality.h"
 #include "base/result.h"
 #include "proxies/bind_surface.h"
 #include "proxies/point_sampling.h"
@@ -80,6 +81,10 @@ struct FitResult {
   float tolerance_m = 0.0f;            // tolerance × diagonal
   double seconds = 0.0;                // wall time of run()
 };
+
+// The quality figures of a fit: its spheres (bind space) measured against its own bind surface
+// at its own tolerance (measure_quality).
+FitQuality measure_fit_quality(const anim::Character& character, const FitResult& fit);
 
 struct FitProxiesJob {
   // Inputs.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "proxies/fit.h"
 #include "proxies/mesh_index.h"
 #include "proxies/point_sampling.h"
 
@@ -72,6 +73,12 @@ FitQuality measure_quality(const anim::Character& character, const BindSurface& 
   q.volume_samples = kept;
   q.outside_volume_ratio = kept > 0 ? float(outside) / float(kept) : 0.0f;
   return q;
+}
+
+FitQuality measure_fit_quality(const anim::Character& character, const FitResult& fit) {
+  std::vector<glm::vec4> spheres;
+  for (const FittedSphere& sphere : fit.fitted) spheres.emplace_back(sphere.center, sphere.radius);
+  return measure_quality(character, fit.surface, spheres, fit.tolerance_m);
 }
 
 }  // namespace proxygi::proxies

@@ -28,9 +28,7 @@ Result<ProxyRig> fit_rig(const anim::Character& character, const RigRequest& req
   rig.model = request.model_name;
   rig.model_hash = request.model_hash;
 
-  std::vector<glm::vec4> spheres;
-  for (const FittedSphere& sphere : fit.fitted) spheres.emplace_back(sphere.center, sphere.radius);
-  rig.quality = measure_quality(character, fit.surface, spheres, fit.tolerance_m);
+  rig.quality = measure_fit_quality(character, fit);
   rig.has_quality = true;
   Result<BindingEvaluation> tracking = evaluate_bindings(character, fit);
   if (!tracking) return tracking.error();

@@ -177,6 +177,20 @@ IndirectResult accumulate_indirect(const FrameTables& tables, const glm::vec3& p
   return result;
 }
 
+UpsampleFootprint upsample_footprint(int x, int y, int k, glm::ivec2 receivers) {
+  const glm::vec2 coordinate = (glm::vec2(x, y) + 0.5f) / float(k) - 0.5f;
+  const glm::ivec2 base = glm::ivec2(glm::floor(coordinate));
+  const glm::vec2 fraction = coordinate - glm::vec2(base);
+  UpsampleFootprint footprint;
+  for (int tap = 0; tap < 4; ++tap) {
+    const glm::ivec2 offset(tap & 1, tap >> 1);
+    footprint.source[std::size_t(tap)] = glm::clamp(base + offset, glm::ivec2(0), receivers - 1);
+    footprint.bilinear_weight[std::size_t(tap)] =
+        (offset.x == 1 ? fraction.x : 1.0f - fraction.x) * (offset.y == 1 ? fraction.y : 1.0f - fraction.y);
+  }
+  return footprint;
+}
+
 glm::vec3 upsample(std::span<const UpsampleTap, 4> taps, const glm::vec3& position, float depth, const glm::vec3& normal,
                    settings::Upsampling mode, float depth_epsilon) {
   glm::vec3 total(0.0f), fallback_total(0.0f);

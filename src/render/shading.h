@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 // CPU twins of the frame's per-receiver formulas. Each function mirrors one shader, formula for
 // formula and in the same float order where it matters; GPU tests compare them at sample pixels.
 //   accumulate_log_occlusion  ↔ shadow_gather.comp   f = Σ_i rot(O_log(s_i), d_i)
@@ -87,6 +88,14 @@ struct UpsampleTap {
   glm::vec3 normal{0.0f, 1.0f, 0.0f};
   float bilinear_weight = 0.0f;  // w^b
 };
+// The composite's gather footprint of display pixel (x, y) at receiver scale k over a grid of
+// `receivers` (receiver i's center at (i + 0.5) k display pixels): the four receivers of the
+// bilinear cell, clamped at the edges, in the order (0,0), (1,0), (0,1), (1,1), and their w^b.
+struct UpsampleFootprint {
+  std::array<glm::ivec2, 4> source{};
+  std::array<float, 4> bilinear_weight{};
+};
+UpsampleFootprint upsample_footprint(int x, int y, int k, glm::ivec2 receivers);
 // Returns the interpolated value; when every weight vanishes (< 1e-6 of the bilinear total),
 // falls back to interpolating by w^b × the tangent-plane term alone, and only when that is 0 too
 // to the valid tap with the closest depth.

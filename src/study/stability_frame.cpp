@@ -92,19 +92,15 @@ SweepImage render_sweep_frame(const render::FrameTables& tables, std::span<const
         image.unshadowed.values[i] = shaded[i].unshadowed;
         continue;
       }
-      // The composite's gather: receiver centers at (i + 0.5) k, clamped at the edges, bilinear weights.
-      const glm::vec2 coordinate = (glm::vec2(x, y) + 0.5f) / float(k) - 0.5f;
-      const glm::ivec2 base = glm::ivec2(glm::floor(coordinate));
-      const glm::vec2 fraction = coordinate - glm::vec2(base);
+      const render::UpsampleFootprint footprint = render::upsample_footprint(x, y, k, glm::ivec2(receivers));
       std::array<render::UpsampleTap, 4> taps;
-      for (int tap = 0; tap < 4; ++tap) {
-        const glm::ivec2 offset(tap & 1, tap >> 1);
-        const glm::ivec2 source = glm::clamp(base + offset, glm::ivec2(0), glm::ivec2(receivers - 1));
+      for (std::size_t tap = 0; tap < 4; ++tap) {
+        const glm::ivec2 source = footprint.source[tap];
         const Receiver& r = shaded[std::size_t(source.y) * std::size_t(receivers) + std::size_t(source.x)];
-        render::UpsampleTap& t = taps[std::size_t(tap)];
+        render::UpsampleTap& t = taps[tap];
         t.value = glm::vec3(r.value, r.unshadowed, 0.0f);  // upsampled with the same taps
         t.position = r.position, t.depth = r.depth, t.normal = r.normal;
-        t.bilinear_weight = (offset.x == 1 ? fraction.x : 1.0f - fraction.x) * (offset.y == 1 ? fraction.y : 1.0f - fraction.y);
+        t.bilinear_weight = footprint.bilinear_weight[tap];
       }
       const glm::vec3 both =
           render::upsample(std::span<const render::UpsampleTap, 4>(taps), g.position[i], g.depth.values[i], g.normal[i], upsampling, depth_epsilon);

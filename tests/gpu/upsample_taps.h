@@ -19,19 +19,16 @@ inline std::array<render::UpsampleTap, 4> upsample_taps(int x, int y, int scale,
                                                         const std::function<glm::vec3(int, int)>& value,
                                                         const image::ImageF& positions, const image::ImageF& depths,
                                                         const image::ImageF& normals) {
-  const glm::vec2 coordinate = (glm::vec2(x, y) + 0.5f) / float(scale) - 0.5f;
-  const glm::ivec2 base = glm::ivec2(glm::floor(coordinate));
-  const glm::vec2 fraction = coordinate - glm::vec2(base);
+  const render::UpsampleFootprint footprint = render::upsample_footprint(x, y, scale, glm::ivec2(receivers));
   std::array<render::UpsampleTap, 4> taps;
-  for (int tap = 0; tap < 4; ++tap) {
-    const glm::ivec2 offset(tap & 1, tap >> 1);
-    const glm::ivec2 source = glm::clamp(base + offset, glm::ivec2(0), glm::ivec2(receivers - 1));
-    render::UpsampleTap& t = taps[std::size_t(tap)];
+  for (std::size_t tap = 0; tap < 4; ++tap) {
+    const glm::ivec2 source = footprint.source[tap];
+    render::UpsampleTap& t = taps[tap];
     t.value = value(source.x, source.y);
     t.position = glm::vec3(positions.at(source.x, source.y));
     t.depth = depths.at(source.x, source.y).w;
     t.normal = glm::vec3(normals.at(source.x, source.y));
-    t.bilinear_weight = (offset.x == 1 ? fraction.x : 1.0f - fraction.x) * (offset.y == 1 ? fraction.y : 1.0f - fraction.y);
+    t.bilinear_weight = footprint.bilinear_weight[tap];
   }
   return taps;
 }

@@ -89,9 +89,7 @@ TEST(Fit, UnskinnedBoxIsOneRigidSetOnItsNode) {
     EXPECT_GT(s.radius, 0.0f);
     EXPECT_LE(fit.fitted[i].protrusion, fit.tolerance_m);
   }
-  std::vector<glm::vec4> spheres;
-  for (const FittedSphere& f : fit.fitted) spheres.emplace_back(f.center, f.radius);
-  const FitQuality q = measure_quality(ch, fit.surface, spheres, fit.tolerance_m);
+  const FitQuality q = measure_fit_quality(ch, fit);
   EXPECT_GE(q.coverage, 0.999f);
   // Exact protrusion (boundary points outside the box) is within the grid's accuracy of the
   // fitted one. Union boundary inside the box (seams where spheres that fall short of their
@@ -99,8 +97,8 @@ TEST(Fit, UnskinnedBoxIsOneRigidSetOnItsNode) {
   // than the quality's distance to the surface, which counts those seams too.
   const std::vector<glm::vec3> directions = fibonacci_directions(256);
   float protrusion = 0.0f;
-  for (const glm::vec4& s : spheres)
-    for (const glm::vec3& d : directions) protrusion = std::max(protrusion, box_sdf(glm::vec3(s) + s.w * d, lo + offset, hi + offset));
+  for (const FittedSphere& s : fit.fitted)
+    for (const glm::vec3& d : directions) protrusion = std::max(protrusion, box_sdf(s.center + s.radius * d, lo + offset, hi + offset));
   EXPECT_LE(protrusion, fit.tolerance_m + 0.5f * fit.diagonal / 100.0f);
   EXPECT_GT(q.outside_volume_ratio, 0.0f);
   EXPECT_LT(q.outside_volume_ratio, 1.0f);
@@ -124,9 +122,7 @@ TEST(Fit, TighterToleranceNeedsMoreSpheresAndErrsLess) {
     float worst_protrusion = 0.0f;
     for (const FittedSphere& f : fit.fitted) worst_protrusion = std::max(worst_protrusion, f.protrusion);
     EXPECT_LE(worst_protrusion, fit.tolerance_m);
-    std::vector<glm::vec4> spheres;
-    for (const FittedSphere& f : fit.fitted) spheres.emplace_back(f.center, f.radius);
-    const FitQuality q = measure_quality(ch, fit.surface, spheres, fit.tolerance_m);
+    const FitQuality q = measure_fit_quality(ch, fit);
     const float worst = std::max(q.hausdorff_spheres_to_surface, q.hausdorff_surface_to_spheres);
     EXPECT_GT(fit.rig.spheres.size(), previous);
     EXPECT_LT(worst, previous_error);

@@ -26,9 +26,7 @@ TEST(SharedAssets, CesiumManFitsWithTheDefaultTolerance) {
   ASSERT_TRUE(job.run().ok());
   EXPECT_GE(fit.rig.spheres.size(), 15u);
   EXPECT_LE(fit.rig.spheres.size(), 40u);
-  std::vector<glm::vec4> spheres;
-  for (const FittedSphere& f : fit.fitted) spheres.emplace_back(f.center, f.radius);
-  const FitQuality q = measure_quality(*ch, fit.surface, spheres, fit.tolerance_m);
+  const FitQuality q = measure_fit_quality(*ch, fit);
   EXPECT_GE(q.coverage, 0.999f);
   // The grid the fit measures protrusion on is diagonal / 100; exact distances may exceed the
   // tolerance by up to half a cell.
@@ -50,9 +48,7 @@ void expect_tight_fit(const anim::Character& ch, std::size_t previous_count) {
   job.character = &ch;
   job.result = &fit;
   ASSERT_TRUE(job.run().ok());
-  std::vector<glm::vec4> spheres;
-  for (const FittedSphere& f : fit.fitted) spheres.emplace_back(f.center, f.radius);
-  const FitQuality q = measure_quality(ch, fit.surface, spheres, fit.tolerance_m);
+  const FitQuality q = measure_fit_quality(ch, fit);
   EXPECT_LE(q.outside_volume_ratio, 0.30f);
   EXPECT_GE(q.coverage, 0.999f);
   EXPECT_LE(fit.rig.spheres.size(), previous_count);

@@ -138,9 +138,7 @@ TEST(Fit, OutsideTargetKeepsAThinBarTightAtFullCoverage) {
   job.character = &ch;
   job.result = &fit;
   ASSERT_TRUE(job.run().ok());
-  std::vector<glm::vec4> spheres;
-  for (const FittedSphere& f : fit.fitted) spheres.emplace_back(f.center, f.radius);
-  const FitQuality q = measure_quality(ch, fit.surface, spheres, fit.tolerance_m);
+  const FitQuality q = measure_fit_quality(ch, fit);
   EXPECT_GE(q.coverage, 0.999f);
   EXPECT_LE(q.outside_volume_ratio, 0.30f);
   // Without the target (protrusion alone) the bar keeps fewer, bloated spheres.
@@ -148,9 +146,7 @@ TEST(Fit, OutsideTargetKeepsAThinBarTightAtFullCoverage) {
   job.options.outside_target = 1.0f;
   job.result = &loose;
   ASSERT_TRUE(job.run().ok());
-  std::vector<glm::vec4> loose_spheres;
-  for (const FittedSphere& f : loose.fitted) loose_spheres.emplace_back(f.center, f.radius);
-  const FitQuality lq = measure_quality(ch, loose.surface, loose_spheres, loose.tolerance_m);
+  const FitQuality lq = measure_fit_quality(ch, loose);
   EXPECT_GT(lq.outside_volume_ratio, q.outside_volume_ratio);
 }
 
