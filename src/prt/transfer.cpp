@@ -284,29 +284,34 @@ Result<TransferSet> compute_transfer(const StaticReceivers& receivers, const Tra
     out.surfaces[s].shadowed.assign(receivers.surfaces[s].positions.size() * nn, 0.0f);
     out.surfaces[s].interreflected.assign(receivers.surfaces[s].positions.size() * 3 * nn, 0.0f);
   }
-  const auto shift_of = [&](std::size_t s, std::size_t v) {
+  // One vertex's ray set: its hemisphere frame, its seeded shift of the direction set, and where
+  // its rays start (the same in every pass, so each pass sees the same directions).
+  struct VertexRays {
+    Frame frame;
+    glm::vec2 shift;
+    glm::vec3 origin;
+    float offset;
+  };
+  const auto rays_of = [&](std::size_t s, std::size_t v) {
+    const StaticSurface& surface = receivers.surfaces[s];
     const std::uint32_t h = hash32(settings.seed ^ hash32(std::uint32_t(s) * 0x9e3779b9u ^ hash32(std::uint32_t(v))));
-    return glm::vec2(float(h & 0xFFFFu) / 65536.0f, float(h >> 16) / 65536.0f);
+    return VertexRays{frame_about(surface.normals[v]), glm::vec2(float(h & 0xFFFFu) / 65536.0f, float(h >> 16) / 65536.0f),
+                      origins[s][v], origin_offset(surface.positions[v])};
   };
 
   // Pass 0: T_DS = H(N) − (π/K) Σ_blocked y(s_k).
   for_each_vertex(receivers, threads, "shadow", progress, [&](std::size_t s, std::size_t v) {
-    const StaticSurface& surface = receivers.surfaces[s];
-    const glm::vec3 p = surface.positions[v], n = surface.normals[v];
-    const Frame f = frame_about(n);
-    const glm::vec2 shift = shift_of(s, v);
-    const float eps = origin_offset(p);
-    const glm::vec3 origin = origins[s][v];
+    const VertexRays r = rays_of(s, v);
     std::vector<double> blocked(nn, 0.0);
     std::vector<float> basis(nn);
     for (std::uint32_t k = 0; k < count; ++k) {
-      const glm::vec3 d = direction(f, k, count, shift);
-      if (!scene.occluded(origin, d, eps)) continue;
+      const glm::vec3 d = direction(r.frame, k, count, r.shift);
+      if (!scene.occluded(r.origin, d, r.offset)) continue;
       sh::evaluate_basis(order, d, basis);
       for (std::size_t i = 0; i < nn; ++i) blocked[i] += basis[i];
     }
     rays += count;
-    const std::vector<double> h = sh::clamped_cosine_about(order, glm::dvec3(n));
+    const std::vector<double> h = sh::clamped_cosine_about(order, glm::dvec3(receivers.surfaces[s].normals[v]));
     float* t = &out.surfaces[s].shadowed[v * nn];
     for (std::size_t i = 0; i < nn; ++i) t[i] = float(h[i] - double(weight) * blocked[i]);
   });
@@ -325,16 +330,11 @@ Result<TransferSet> compute_transfer(const StaticReceivers& receivers, const Tra
   const std::vector<double> h_up = sh::clamped_cosine_about(order, glm::dvec3(0.0, 1.0, 0.0));
   for (int b = 1; b <= settings.bounces; ++b) {
     for_each_vertex(receivers, threads, "bounce " + std::to_string(b), progress, [&](std::size_t s, std::size_t v) {
-      const StaticSurface& surface = receivers.surfaces[s];
-      const glm::vec3 p = surface.positions[v], n = surface.normals[v];
-      const Frame f = frame_about(n);
-      const glm::vec2 shift = shift_of(s, v);
-      const float eps = origin_offset(p);
-      const glm::vec3 origin = origins[s][v];
+      const VertexRays r = rays_of(s, v);
       std::vector<double> sum(3 * nn, 0.0);
       for (std::uint32_t k = 0; k < count; ++k) {
-        const glm::vec3 d = direction(f, k, count, shift);
-        const RayScene::Hit hit = scene.intersect(origin, d, eps);
+        const glm::vec3 d = direction(r.frame, k, count, r.shift);
+        const RayScene::Hit hit = scene.intersect(r.origin, d, r.offset);
         if (hit.kind == RayScene::Hit::none || !hit.front) continue;
         if (hit.kind == RayScene::Hit::outer_ground) {
           if (b != 1) continue;  // the outer ground has no bounce light of its own

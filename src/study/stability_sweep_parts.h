@@ -3,10 +3,18 @@
 #include <chrono>
 #include <string>
 
+#include <glm/glm.hpp>
+
+#include "settings/render_settings.h"
+
 #include "study/stability_shading.h"
 #include "study/stability_sweeps.h"
 
 namespace proxygi::study {
+
+// The product's τ the sweeps run HYB at (the setting's default), and the ground receivers' normal.
+inline const float kTau = settings::RenderSettings{}.hyb_tau;
+inline const glm::vec3 kUp{0.0f, 1.0f, 0.0f};
 
 // Appends a point; it passes when finite and ≤ its metric's threshold.
 void add_point(SweepResult& sweep, std::string method, std::string series, double x, int metric, double value);

@@ -44,9 +44,6 @@ std::string fixed(double value, int digits) {
 
 namespace {
 
-constexpr float kTau = 0.25f;  // the product's default τ (settings::RenderSettings::hyb_tau)
-const glm::vec3 kUp(0.0f, 1.0f, 0.0f);
-
 // S1: m identical spheres of radius r, centers 2r above the plane, jittered by δr.
 SweepResult overlap_stack(const StabilityOptions& options) {
   SweepResult sweep;

@@ -12,9 +12,6 @@
 namespace proxygi::study {
 namespace {
 
-constexpr float kTau = 0.25f;
-const glm::vec3 kUp(0.0f, 1.0f, 0.0f);
-
 SweepResult pass_through(const StabilityOptions& options) {
   SweepResult sweep;
   sweep.id = "S2";
