@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "image/image.h"
 #include "study/stability_metrics.h"
 
 namespace proxygi::app {
@@ -22,7 +23,7 @@ ref::Plane luminance_plane(const image::ImageF& image) {
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
       const glm::vec4& p = image.at(x, y);
-      plane.at(x, y) = 0.2126f * p.r + 0.7152f * p.g + 0.0722f * p.b;
+      plane.at(x, y) = image::rec709_luminance<float>(p);
     }
   return plane;
 }

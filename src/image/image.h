@@ -25,6 +25,13 @@ struct ImageF {
   const glm::vec4& at(int x, int y) const { return pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
 };
 
+// Rec. 709 luminance 0.2126 R + 0.7152 G + 0.0722 B of linear RGB (any vector with r, g, b),
+// computed in T.
+template <class T = double, class Rgb>
+constexpr T rec709_luminance(const Rgb& c) {
+  return T(0.2126) * T(c.r) + T(0.7152) * T(c.g) + T(0.0722) * T(c.b);
+}
+
 // Reads .hdr (Radiance RGBE), .exr (OpenEXR, RGB(A) float/half) and .png (sRGB -> linear).
 // Refuses images larger than max_pixels. Errors name the file.
 // - The format is chosen by the file's magic bytes, not its extension.

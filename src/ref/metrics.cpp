@@ -72,7 +72,7 @@ double mean_luminance(const image::ImageF& image, const ReceiverMask* mask) {
   for (std::size_t i = 0; i < image.pixels.size(); ++i) {
     if (mask != nullptr && !mask->contains(i)) continue;
     const glm::vec4& p = image.pixels[i];
-    sum += 0.2126 * double(p.r) + 0.7152 * double(p.g) + 0.0722 * double(p.b);
+    sum += image::rec709_luminance(p);
     ++count;
   }
   return count > 0 ? sum / double(count) : 0.0;

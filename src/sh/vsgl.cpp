@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "image/image.h"
 #include "sh/spherical_gaussian.h"
 
 namespace proxygi::sh {
@@ -11,7 +12,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 }
 
-double luminance(const glm::dvec3& rgb) { return 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b; }
+double luminance(const glm::dvec3& rgb) { return image::rec709_luminance(rgb); }
 
 void add_light(VsglSums& sums, const VirtualPointLight& light, const glm::dvec3& origin) {
   const double w = luminance(light.flux);

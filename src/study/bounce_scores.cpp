@@ -5,8 +5,6 @@
 namespace proxygi::study {
 namespace {
 
-double luminance(const glm::vec4& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
-
 Status same_size(const image::ImageF& a, const image::ImageF& b) {
   if (a.width == b.width && a.height == b.height) return {};
   return make_error("bounce: size mismatch: " + std::to_string(a.width) + "x" + std::to_string(a.height) + " against " +
@@ -43,8 +41,8 @@ ref::ReceiverMask significant_bounce(const image::ImageF& bounce, const image::I
                                      const ref::ReceiverMask& receivers, double fraction) {
   ref::ReceiverMask out = receivers;
   for (std::size_t i = 0; i < out.receiver.size(); ++i) {
-    const double b = luminance(bounce.pixels[i]);
-    out.receiver[i] = receivers.receiver[i] != 0 && b > 0.0 && b >= fraction * luminance(full.pixels[i]);
+    const double b = image::rec709_luminance(bounce.pixels[i]);
+    out.receiver[i] = receivers.receiver[i] != 0 && b > 0.0 && b >= fraction * image::rec709_luminance(full.pixels[i]);
   }
   return out;
 }
@@ -76,8 +74,8 @@ Result<BounceError> bounce_error(const image::ImageF& test, const image::ImageF&
     const glm::dvec3 x(test.pixels[i]), r(reference.pixels[i]);
     squared_error += glm::dot(x - r, x - r);
     squared_reference += glm::dot(r, r);
-    test_luminance += luminance(test.pixels[i]);
-    reference_luminance += luminance(reference.pixels[i]);
+    test_luminance += image::rec709_luminance(test.pixels[i]);
+    reference_luminance += image::rec709_luminance(reference.pixels[i]);
     ++out.pixels;
   }
   if (out.pixels == 0 || squared_reference <= 0.0) return BounceError{};

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "image/image.h"
 #include "sh/basis.h"
 #include "sh/convolution.h"
 #include "sh/exponential.h"
@@ -27,7 +28,7 @@ bool ray_hits(const glm::dvec3& p, const glm::dvec3& direction, const render::Sp
 
 }  // namespace
 
-double luminance(const glm::vec3& rgb) { return 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b; }
+double luminance(const glm::vec3& rgb) { return image::rec709_luminance(rgb); }
 
 double relative_l2(std::span<const double> a, std::span<const double> b) {
   double difference = 0.0, norm = 0.0;
