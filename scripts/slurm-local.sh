@@ -35,6 +35,12 @@ munged --force --socket="$socket" --key-file="$work/munge/munge.key" --pid-file=
 
 host=$(hostname -s)
 cpus=$(nproc)
+# Two ports the kernel says are free now, so a second cluster or another service on the host does not collide.
+read -r ctld_port slurmd_port < <(/usr/bin/python3 -c '
+import socket
+socks = [socket.socket() for _ in range(2)]
+for s in socks: s.bind(("127.0.0.1", 0))
+print(*(s.getsockname()[1] for s in socks))')
 user=$(id -un)
 cat > "$conf" <<CONF
 ClusterName=proxygi-local
@@ -44,8 +50,8 @@ SlurmdUser=root
 AuthType=auth/munge
 AuthInfo=socket=$socket
 CredType=cred/munge
-SlurmctldPort=16817
-SlurmdPort=16818
+SlurmctldPort=$ctld_port
+SlurmdPort=$slurmd_port
 StateSaveLocation=$work/state
 SlurmdSpoolDir=$work/spool
 SlurmctldPidFile=$work/slurmctld.pid
