@@ -1,6 +1,7 @@
 #pragma once
-// The run-time form of a scene's PRT (prt/transfer.h) for the frame's static_transfer pass
-// (shaders/static_transfer.comp, gpu/static_transfer_pass.h) and its CPU twin (below).
+// The run-time form of a scene's PRT (prt/transfer.h), and the CPU form of the static-receiver
+// formula that a frame pass is to apply (not built yet: docs/prt.md, "Run time"); the pass's twin
+// tests will compare against shade_static_direct below.
 //
 // A receiver of the frame is a world point p with unit normal N (facing the viewer); it is a
 // static receiver when it lies on a PRT triangle: within kStaticHitDistance of the triangle's
