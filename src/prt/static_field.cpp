@@ -74,12 +74,6 @@ StaticGrid build_grid(const StaticTransferField& field, float spacing_m) {
   return grid;
 }
 
-float dot_n(const float* a, const float* b, std::size_t n) {
-  float sum = 0.0f;
-  for (std::size_t i = 0; i < n; ++i) sum += a[i] * b[i];
-  return sum;
-}
-
 }  // namespace
 
 Result<std::shared_ptr<const StaticTransferField>> make_static_field(const StaticReceivers& receivers,
@@ -135,10 +129,10 @@ std::vector<float> bake_static_records(const StaticTransferField& field, const s
     const std::vector<double> h = sh::clamped_cosine_about(order, glm::dvec3(field.normals[v]));
     for (std::size_t i = 0; i < nn; ++i) out[3 * nn + i] = float(h[i]) - t[i];
     for (int c = 0; c < 3; ++c) {
-      const float* t_di = field.interreflected.data() + (v * 3 + std::size_t(c)) * nn;
-      const float* l = light[std::size_t(c)].data();
-      const float t_di_l = dot_n(t_di, l, nn);
-      out[4 * nn + std::size_t(c)] = t_di_l - dot_n(t.data(), l, nn);
+      const std::span<const float> t_di(field.interreflected.data() + (v * 3 + std::size_t(c)) * nn, nn);
+      const std::span<const float> l = light[std::size_t(c)];
+      const float t_di_l = dot_coefficients(t_di, l, nn);
+      out[4 * nn + std::size_t(c)] = t_di_l - dot_coefficients(t, l, nn);
       out[4 * nn + 3 + std::size_t(c)] = t_di_l;
     }
   }
@@ -198,19 +192,16 @@ glm::vec3 shade_static_direct(int order, StaticTransferLevel level, std::span<co
   glm::vec3 out(0.0f);
   if (level == StaticTransferLevel::ratio) {
     for (int c = 0; c < 3; ++c) {
-      const float* lh = lighting_lh[std::size_t(c)].data();
+      const std::span<const float> lh = lighting_lh[std::size_t(c)];
       const float unshadowed = std::max(sqrt_four_pi * lh[0], 0.0f);
-      const float shadowed = std::clamp(dot_n(occlusion.data(), lh, nn), 0.0f, unshadowed);
+      const float shadowed = std::clamp(dot_coefficients(occlusion, lh, nn), 0.0f, unshadowed);
       out[c] = unshadowed > 0.0f ? std::max(shadowed * record[4 * nn + 3 + std::size_t(c)] / unshadowed, 0.0f) : 0.0f;
     }
     return out;
   }
-  const float* blocked = record.data() + 3 * nn;
-  const float blocked_total = sqrt_four_pi * blocked[0];
-  float kappa = 1.0f;
-  if (blocked_total > 1e-6f) kappa = std::clamp(dot_n(blocked, occlusion.data(), nn) / blocked_total, 0.0f, 1.0f);
+  const float kappa = unblocked_fraction_of_blocked(order, record.subspan(3 * nn, nn), occlusion);
   for (int c = 0; c < 3; ++c) {
-    const float e = dot_n(occlusion.data(), record.data() + std::size_t(c) * nn, nn) + kappa * record[4 * nn + std::size_t(c)];
+    const float e = dot_coefficients(occlusion, record.subspan(std::size_t(c) * nn, nn), nn) + kappa * record[4 * nn + std::size_t(c)];
     out[c] = std::max(e, 0.0f);
   }
   return out;

@@ -7,25 +7,24 @@
 #include "sh/product.h"
 
 namespace proxygi::prt {
-namespace {
-
-float dot(std::span<const float> a, std::span<const float> b, std::size_t n) {
+float dot_coefficients(std::span<const float> a, std::span<const float> b, std::size_t n) {
   float sum = 0.0f;
   for (std::size_t i = 0; i < n; ++i) sum += a[i] * b[i];
   return sum;
 }
 
-}  // namespace
+float unblocked_fraction_of_blocked(int order, std::span<const float> blocked, std::span<const float> occlusion) {
+  // D · 1 = √4π D_0: the cosine-weighted solid angle static geometry blocks.
+  const float blocked_total = float(sh::kSqrtFourPi) * blocked[0];
+  if (!(blocked_total > 1e-6f)) return 1.0f;
+  return std::clamp(dot_coefficients(blocked, occlusion, std::size_t(order * order)) / blocked_total, 0.0f, 1.0f);
+}
 
 float unblocked_proxy_fraction(int order, std::span<const float> clamped_cosine, std::span<const float> shadowed,
                                std::span<const float> occlusion) {
-  const std::size_t nn = std::size_t(order * order);
-  // (H − T) · 1 = √4π (H − T)_0: the cosine-weighted solid angle static geometry blocks.
-  const float blocked = float(sh::kSqrtFourPi) * (clamped_cosine[0] - shadowed[0]);
-  if (!(blocked > 1e-6f)) return 1.0f;
-  float open = 0.0f;
-  for (std::size_t i = 0; i < nn; ++i) open += (clamped_cosine[i] - shadowed[i]) * occlusion[i];
-  return std::clamp(open / blocked, 0.0f, 1.0f);
+  std::vector<float> blocked(std::size_t(order * order));
+  for (std::size_t i = 0; i < blocked.size(); ++i) blocked[i] = clamped_cosine[i] - shadowed[i];
+  return unblocked_fraction_of_blocked(order, blocked, occlusion);
 }
 
 glm::vec3 shade_static_receiver(int order, StaticTransferLevel level, const StaticReceiverSh& receiver,
@@ -46,19 +45,19 @@ glm::vec3 shade_static_receiver(int order, StaticTransferLevel level, const Stat
       case StaticTransferLevel::l0:
       case StaticTransferLevel::ratio: {
         sh::product(order, light, receiver.clamped_cosine, product);  // M_L H = LH(N)
-        e = dot(occlusion, product, nn);
+        e = dot_coefficients(occlusion, product, nn);
         if (level == StaticTransferLevel::ratio) {
-          const float unshadowed = dot(receiver.clamped_cosine, light, nn);
-          e = unshadowed > 0.0f ? e * dot(t_di, light, nn) / unshadowed : 0.0f;
+          const float unshadowed = dot_coefficients(receiver.clamped_cosine, light, nn);
+          e = unshadowed > 0.0f ? e * dot_coefficients(t_di, light, nn) / unshadowed : 0.0f;
         }
-        if (!indirect.empty()) e += dot(indirect, receiver.clamped_cosine, nn);
+        if (!indirect.empty()) e += dot_coefficients(indirect, receiver.clamped_cosine, nn);
         break;
       }
       case StaticTransferLevel::l1: {
         sh::product(order, light, receiver.shadowed, product);  // M_L T
-        e = dot(occlusion, product, nn);
-        if (!indirect.empty()) e += dot(indirect, receiver.shadowed, nn);
-        e += kappa * (dot(t_di, light, nn) - dot(receiver.shadowed, light, nn));
+        e = dot_coefficients(occlusion, product, nn);
+        if (!indirect.empty()) e += dot_coefficients(indirect, receiver.shadowed, nn);
+        e += kappa * (dot_coefficients(t_di, light, nn) - dot_coefficients(receiver.shadowed, light, nn));
         break;
       }
     }

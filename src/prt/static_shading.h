@@ -31,5 +31,10 @@ glm::vec3 shade_static_receiver(int order, StaticTransferLevel level, const Stat
 // κ_p of the l1 level.
 float unblocked_proxy_fraction(int order, std::span<const float> clamped_cosine, std::span<const float> shadowed,
                                std::span<const float> occlusion);
+// The same κ_p from the blocked part D = H(N) − T_DS given directly (the frame's baked records).
+float unblocked_fraction_of_blocked(int order, std::span<const float> blocked, std::span<const float> occlusion);
+
+// Σ_{i<n} a_i b_i in float, in index order (the SH inner product both shading forms use).
+float dot_coefficients(std::span<const float> a, std::span<const float> b, std::size_t n);
 
 }  // namespace proxygi::prt
