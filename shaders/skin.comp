@@ -2,8 +2,11 @@
 // Skin pass: linear blend skinning of one primitive, formula for formula the CPU reference
 // anim::SkinningJob (anim/skinning.h): M = sum_k w_k S[j_k], p' = M p, n' = normalize(N n),
 // after anim::MorphJob: p = p0 + sum_t w_t dp_t, n = n0 + sum_t w_t dn_t.
+// The palettes are uniform buffers (up to kSkinUniformPaletteJoints joints) or, compiled with
+// STORAGE_PALETTE, storage buffers (shared/skin_palette.h); the arithmetic is the same.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/layouts.h"
+#include "shared/skin_palette.h"
 
 layout(local_size_x = kSkinLocalSize) in;
 layout(push_constant) uniform Push { SkinPush push; };
@@ -11,8 +14,13 @@ layout(std430, set = 0, binding = kSkinBindBindPositions) readonly buffer Positi
 layout(std430, set = 0, binding = kSkinBindBindNormals) readonly buffer Normals { float bind_normals[]; };
 layout(std430, set = 0, binding = kSkinBindJoints) readonly buffer Joints { uint packed_joints[]; };
 layout(std430, set = 0, binding = kSkinBindWeights) readonly buffer Weights { float weights[]; };
+#ifdef STORAGE_PALETTE
 layout(std430, set = 0, binding = kSkinBindSkinMatrices) readonly buffer SkinMatrices { mat4 skin_matrices[]; };
 layout(std430, set = 0, binding = kSkinBindNormalMatrices) readonly buffer NormalMatrices { mat4 normal_matrices[]; };
+#else
+layout(std140, set = 0, binding = kSkinBindSkinMatrices) uniform SkinMatrices { mat4 skin_matrices[kSkinUniformPaletteJoints]; };
+layout(std140, set = 0, binding = kSkinBindNormalMatrices) uniform NormalMatrices { mat4 normal_matrices[kSkinUniformPaletteJoints]; };
+#endif
 layout(std430, set = 0, binding = kSkinBindOutPositions) writeonly buffer OutPositions { vec4 out_positions[]; };
 layout(std430, set = 0, binding = kSkinBindOutNormals) writeonly buffer OutNormals { vec4 out_normals[]; };
 layout(std430, set = 0, binding = kSkinBindPositionDeltas) readonly buffer PositionDeltas { float position_deltas[]; };

@@ -15,6 +15,7 @@
 // visibility DC, or the shadow pass's per-tile list lengths as a heat map.
 // CPU twins: render::upsample, render::tonemap and image::linear_to_srgb.
 #extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_control_flow_attributes : require
 #include "frame_common.glsl"
 
 layout(local_size_x = kFrameLocalSize, local_size_y = kFrameLocalSize) in;
@@ -60,11 +61,14 @@ float linear_to_srgb(float value) {
 // (eq. 11 or bilinear) and shaded values; when every weight vanishes, the same taps weighted by
 // bilinear × tangent-plane term, and when that is 0 the tap nearest in depth alone (weight 1). Any receiver quantity upsamples as Σ w_i v_i / weight_sum with these taps, so
 // the direct and indirect views sum to the final frame's irradiance.
+// Slot t holds tap t (offset (t & 1, t >> 1)) and every loop over slots runs 0..3 unrolled, so
+// each array is indexed by constants: llvmpipe spills dynamically indexed arrays to memory.
+// Sums skip unused slots and run in slot order, the order of the taps.
 struct UpsampleTaps {
   uint index[4];
   float weight[4];
   vec3 shaded[4];
-  int count;
+  bool used[4];
   float weight_sum;
 };
 
@@ -79,19 +83,23 @@ UpsampleTaps upsample_taps(uvec2 pixel, vec3 position, float depth) {
   bool bilateral = frame.composite_mode == kCompositeBilateral;
   float epsilon = frame.bilateral_depth_epsilon;
   UpsampleTaps taps;
-  taps.count = 0;
   float weight_sum = 0.0, bilinear_sum = 0.0, fallback_sum = 0.0;
   float fallback[4];
   float nearest_gap = 1e30;
   uint nearest_index = 0u;
   vec3 nearest_value = vec3(0.0);
-  for (int tap = 0; tap < 4; ++tap) {
+  [[unroll]] for (int tap = 0; tap < 4; ++tap) {
     ivec2 offset = ivec2(tap & 1, tap >> 1);
     ivec2 source = clamp(base + offset, ivec2(0), receiver_size - 1);
     uint index = uint(source.y * receiver_size.x + source.x);
     vec4 tap_shaded = shaded[index];  // one read for value and depth; the normal only when needed
     float tap_depth = tap_shaded.w;
-    if (tap_depth <= 0.0) continue;
+    taps.used[tap] = tap_depth > 0.0;
+    taps.index[tap] = index;
+    taps.weight[tap] = 0.0;
+    taps.shaded[tap] = vec3(0.0);
+    fallback[tap] = 0.0;
+    if (!taps.used[tap]) continue;
     vec3 value = tap_shaded.rgb;
     float weight = (offset.x == 1 ? fraction.x : 1.0 - fraction.x) * (offset.y == 1 ? fraction.y : 1.0 - fraction.y);
     bilinear_sum += weight;
@@ -105,17 +113,15 @@ UpsampleTaps upsample_taps(uvec2 pixel, vec3 position, float depth) {
       facing *= facing;
       float plane_gap = abs(dot(normal, receivers[index].position_depth.xyz - position)) / depth;
       float near_plane = epsilon / (epsilon + plane_gap);
-      fallback[taps.count] = weight * near_plane;
+      fallback[tap] = weight * near_plane;
       fallback_sum += weight * near_plane;
       weight *= facing * near_plane;
     } else {
-      fallback[taps.count] = weight;
+      fallback[tap] = weight;
       fallback_sum += weight;
     }
-    taps.index[taps.count] = index;
-    taps.weight[taps.count] = weight;
-    taps.shaded[taps.count] = value;
-    ++taps.count;
+    taps.weight[tap] = weight;
+    taps.shaded[tap] = value;
     weight_sum += weight;
     float gap = abs(tap_depth - depth);
     if (gap < nearest_gap) {
@@ -126,10 +132,11 @@ UpsampleTaps upsample_taps(uvec2 pixel, vec3 position, float depth) {
   }
   taps.weight_sum = weight_sum;
   if (!(weight_sum > 1e-6 * max(bilinear_sum, 1e-30)) && fallback_sum > 0.0) {
-    for (int t = 0; t < taps.count; ++t) taps.weight[t] = fallback[t];
+    [[unroll]] for (int t = 0; t < 4; ++t) taps.weight[t] = fallback[t];
     taps.weight_sum = fallback_sum;
   } else if (!(weight_sum > 1e-6 * max(bilinear_sum, 1e-30))) {
-    taps.count = 1;
+    [[unroll]] for (int t = 1; t < 4; ++t) taps.used[t] = false;
+    taps.used[0] = true;
     taps.index[0] = nearest_index;
     taps.weight[0] = 1.0;
     taps.shaded[0] = nearest_value;
@@ -140,15 +147,16 @@ UpsampleTaps upsample_taps(uvec2 pixel, vec3 position, float depth) {
 
 vec3 upsample_shaded(UpsampleTaps taps) {
   vec3 total = vec3(0.0);
-  for (int t = 0; t < taps.count; ++t) total += taps.weight[t] * taps.shaded[t];
+  [[unroll]] for (int t = 0; t < 4; ++t)
+    if (taps.used[t]) total += taps.weight[t] * taps.shaded[t];
   return total / taps.weight_sum;
 }
 
 // A receiver quantity (kDebugViewDirect: E_direct and its w, kDebugViewIndirect: E_indirect) with the same taps.
 vec4 upsample_buffer(UpsampleTaps taps, uint view) {
   vec4 total = vec4(0.0);
-  for (int t = 0; t < taps.count; ++t)
-    total += taps.weight[t] * (view == kDebugViewIndirect ? indirect_light[taps.index[t]] : direct_light[taps.index[t]]);
+  [[unroll]] for (int t = 0; t < 4; ++t)
+    if (taps.used[t]) total += taps.weight[t] * (view == kDebugViewIndirect ? indirect_light[taps.index[t]] : direct_light[taps.index[t]]);
   return total / taps.weight_sum;
 }
 
@@ -178,7 +186,8 @@ void main() {
   vec3 e = vec3(0.0);
   vec3 albedo = vec3(0.0);
   UpsampleTaps taps;
-  taps.count = 0;
+  [[unroll]] for (int t = 0; t < 4; ++t) taps.used[t] = false;
+  taps.weight_sum = 1.0;
   if (position_depth.w > 0.0) {
     albedo = imageLoad(albedo_image, ivec2(pixel)).rgb;
     if (frame.composite_mode == kCompositeDisplayIrradiance) {

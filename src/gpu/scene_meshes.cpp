@@ -75,6 +75,7 @@ Status SceneRenderer::upload_instances() {
       draw.node = int(node);
       draw.skin = n.skin;
       const std::size_t palette_size = n.skin >= 0 ? character.skins[std::size_t(n.skin)].joints.size() : 1;
+      draw.palette_joints = std::uint32_t(palette_size);
       for (const anim::Primitive& original : character.meshes[std::size_t(n.mesh)].primitives) {
         anim::Primitive primitive = original;
         if (n.skin < 0 || primitive.influences_per_vertex < 1) {  // rigid: one joint, the node itself
@@ -110,7 +111,7 @@ Status SceneRenderer::upload_instances() {
       }
       for (std::uint32_t slot = 0; slot < slots; ++slot)
         for (auto* palettes : {&draw.palettes, &draw.normal_palettes}) {
-          auto palette = Buffer::create(context_, palette_size * sizeof(glm::mat4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+          auto palette = Buffer::create(context_, palette_size * sizeof(glm::mat4), SkinPass::kPaletteUsage,
                                         MemoryKind::host_visible);
           if (!palette) return palette.error();
           palettes->push_back(std::move(*palette));
@@ -195,10 +196,13 @@ Result<std::vector<std::vector<std::vector<glm::vec3>>>> SceneRenderer::read_ski
 void SceneRenderer::record_skinning(VkCommandBuffer commands, std::uint32_t slot) const {
   memory_barrier(commands);  // the previous frame may still read the skinned vertices
   for (const auto& instance : instances_)
-    for (const auto& mesh : instance->meshes)
+    for (const auto& mesh : instance->meshes) {
+      const SkinPalette palette{&mesh.palettes[slot], &mesh.normal_palettes[slot], mesh.palette_joints};
       for (const auto& primitive : mesh.primitives)
-        skin_pass_->record(context_, commands, primitive, mesh.palettes[slot], &mesh.normal_palettes[slot],
+        skin_pass_->record(context_, commands, primitive, palette,
                            mesh.morph_weights.empty() ? nullptr : &mesh.morph_weights[slot]);
+    }
+  SkinPass::record_outputs_barrier(commands);  // one for all dispatches: their outputs are disjoint
 }
 
 }  // namespace proxygi::gpu

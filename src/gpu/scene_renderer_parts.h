@@ -40,6 +40,7 @@ struct MeshDraw {
   std::vector<MaterialBinding> materials;
   std::vector<Buffer> palettes;         // skin matrices, one buffer per ring slot, host-visible
   std::vector<Buffer> normal_palettes;  // their inverse-transposes (anim::normal_matrix layout)
+  std::uint32_t palette_joints = 1;     // matrices in each palette
   std::size_t morph_offset = 0;         // the node's slice of PoseBuffers::morph_weights
   std::vector<Buffer> morph_weights;    // that slice, one buffer per ring slot; empty: no morphs
 };

@@ -8,6 +8,7 @@
 #include "gpu/context.h"
 #include "gpu/transfer.h"
 #include "shaders/shared/layouts.h"
+#include "shaders/shared/skin_palette.h"
 
 namespace proxygi::gpu {
 namespace {
@@ -54,16 +55,25 @@ Status upload_morph_targets(Context& context, const anim::Primitive& primitive, 
 
 Result<SkinPass> SkinPass::create(const Context& context) {
   using namespace gpu_layout;
-  std::vector<Binding> bindings;
-  for (std::uint32_t binding : {kSkinBindBindPositions, kSkinBindBindNormals, kSkinBindJoints, kSkinBindWeights,
-                                kSkinBindSkinMatrices, kSkinBindNormalMatrices, kSkinBindOutPositions,
-                                kSkinBindOutNormals, kSkinBindPositionDeltas, kSkinBindNormalDeltas,
-                                kSkinBindMorphWeights})
-    bindings.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT});
-  auto pipeline = Pipeline::compute(context, "skin.comp", bindings, sizeof(gpu_layout::SkinPush));
-  if (!pipeline) return pipeline.error();
   SkinPass pass;
-  pass.pipeline_ = std::move(*pipeline);
+  for (const PaletteBinding binding : {PaletteBinding::uniform, PaletteBinding::storage}) {
+    const VkDescriptorType palette_type =
+        binding == PaletteBinding::uniform ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    std::vector<Binding> bindings;
+    for (std::uint32_t slot : {kSkinBindBindPositions, kSkinBindBindNormals, kSkinBindJoints, kSkinBindWeights,
+                               kSkinBindSkinMatrices, kSkinBindNormalMatrices, kSkinBindOutPositions,
+                               kSkinBindOutNormals, kSkinBindPositionDeltas, kSkinBindNormalDeltas,
+                               kSkinBindMorphWeights}) {
+      const bool palette = slot == kSkinBindSkinMatrices || slot == kSkinBindNormalMatrices;
+      bindings.push_back({slot, palette ? palette_type : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT});
+    }
+    const char* shader = binding == PaletteBinding::uniform ? "skin.comp" : "skin.comp:storage_palette";
+    auto pipeline = Pipeline::compute(context, shader, bindings, sizeof(gpu_layout::SkinPush));
+    if (!pipeline) return pipeline.error();
+    (binding == PaletteBinding::uniform ? pass.uniform_pipeline_ : pass.storage_pipeline_) = std::move(*pipeline);
+  }
+  const std::uint32_t device_joints = context.limits().maxUniformBufferRange / std::uint32_t(sizeof(glm::mat4));
+  pass.uniform_joints_ = device_joints >= kSkinUniformPaletteJoints ? kSkinUniformPaletteJoints : 0u;
   return pass;
 }
 
@@ -106,37 +116,49 @@ Result<SkinnedPrimitive> SkinPass::upload(Context& context, const anim::Primitiv
   return out;
 }
 
+PaletteBinding SkinPass::binding_for(std::uint32_t joints) const {
+  return joints <= uniform_joints_ ? PaletteBinding::uniform : PaletteBinding::storage;
+}
+
 void SkinPass::record(const Context& context, VkCommandBuffer commands, const SkinnedPrimitive& primitive,
-                      const Buffer& skin_matrices, const Buffer* normal_matrices,
-                      const Buffer* morph_weights) const {
+                      const SkinPalette& palette, const Buffer* morph_weights,
+                      std::optional<PaletteBinding> binding) const {
   // Without morphing the delta and weight bindings are never read: any buffer fills them.
   const bool morphing = morph_weights != nullptr && primitive.morph_targets > 0;
   const Buffer& position_deltas = morphing ? primitive.position_deltas : primitive.bind_positions;
   const Buffer& normal_deltas =
       morphing && primitive.has_normals ? primitive.normal_deltas : primitive.bind_normals;
+  const bool uniform = binding.value_or(binding_for(palette.joints)) == PaletteBinding::uniform;
+  const Pipeline& pipeline = uniform ? uniform_pipeline_ : storage_pipeline_;
+  const Buffer& skin_matrices = *palette.skin_matrices;
+  const Buffer& normal_matrices = palette.normal_matrices ? *palette.normal_matrices : skin_matrices;
   context.begin_label(commands, kName);
-  pipeline_.bind(commands);
-  DescriptorPush()
-      .storage_buffer(gpu_layout::kSkinBindBindPositions, primitive.bind_positions)
+  pipeline.bind(commands);
+  DescriptorPush descriptors;
+  descriptors.storage_buffer(gpu_layout::kSkinBindBindPositions, primitive.bind_positions)
       .storage_buffer(gpu_layout::kSkinBindBindNormals, primitive.bind_normals)
       .storage_buffer(gpu_layout::kSkinBindJoints, primitive.joints)
       .storage_buffer(gpu_layout::kSkinBindWeights, primitive.weights)
-      .storage_buffer(gpu_layout::kSkinBindSkinMatrices, skin_matrices)
-      .storage_buffer(gpu_layout::kSkinBindNormalMatrices, normal_matrices ? *normal_matrices : skin_matrices)
       .storage_buffer(gpu_layout::kSkinBindOutPositions, primitive.world_positions)
       .storage_buffer(gpu_layout::kSkinBindOutNormals, primitive.world_normals)
       .storage_buffer(gpu_layout::kSkinBindPositionDeltas, position_deltas)
       .storage_buffer(gpu_layout::kSkinBindNormalDeltas, normal_deltas)
-      .storage_buffer(gpu_layout::kSkinBindMorphWeights, morphing ? *morph_weights : primitive.weights)
-      .push(context, commands, pipeline_);
+      .storage_buffer(gpu_layout::kSkinBindMorphWeights, morphing ? *morph_weights : primitive.weights);
+  if (uniform)
+    descriptors.uniform_buffer(gpu_layout::kSkinBindSkinMatrices, skin_matrices)
+        .uniform_buffer(gpu_layout::kSkinBindNormalMatrices, normal_matrices);
+  else
+    descriptors.storage_buffer(gpu_layout::kSkinBindSkinMatrices, skin_matrices)
+        .storage_buffer(gpu_layout::kSkinBindNormalMatrices, normal_matrices);
+  descriptors.push(context, commands, pipeline);
   const gpu_layout::SkinPush push{primitive.vertex_count,        primitive.influences,
-                                  primitive.has_normals ? 1u : 0u, normal_matrices ? 1u : 0u,
+                                  primitive.has_normals ? 1u : 0u, palette.normal_matrices ? 1u : 0u,
                                   morphing ? primitive.morph_targets : 0u, 0u, 0u, 0u};
-  pipeline_.push_constants(commands, &push, sizeof(push));
+  pipeline.push_constants(commands, &push, sizeof(push));
   vkCmdDispatch(commands, group_count(primitive.vertex_count, gpu_layout::kSkinLocalSize), 1, 1);
-
-  memory_barrier(commands);
   context.end_label(commands);
 }
+
+void SkinPass::record_outputs_barrier(VkCommandBuffer commands) { memory_barrier(commands); }
 
 }  // namespace proxygi::gpu

@@ -1,12 +1,14 @@
 #pragma once
 // Skin pass (frame step 1): linear blend skinning on the GPU, one dispatch per skinned primitive.
 //   inputs : SkinnedPrimitive (static bind-pose buffers, uploaded once), the skin's palette of
-//            skin matrices (and optionally normal matrices) as column-major mat4 in a buffer
+//            skin matrices (and optionally normal matrices) as column-major mat4 in a buffer,
+//            read as a uniform buffer up to kSkinUniformPaletteJoints, else as a storage buffer
 //   outputs: SkinnedPrimitive::world_positions / world_normals, vec4 per vertex, world space
 // CPU twin: anim::SkinningJob (anim/skinning.h); tests compare them within 1e-5 × the model's
 // bounding-box diagonal. Morph targets (anim::MorphJob) are applied before skinning, with one
 // weight per target read from a buffer the caller writes each frame.
 #include <memory>
+#include <optional>
 
 #include "anim/character.h"
 #include "base/result.h"
@@ -32,25 +34,48 @@ struct SkinnedPrimitive {
   Buffer world_normals;    // out: vec4 per vertex
 };
 
+// A skin's palettes for one dispatch: column-major mat4 per joint, in buffers made with
+// SkinPass::kPaletteUsage (either variant can read them).
+struct SkinPalette {
+  const Buffer* skin_matrices = nullptr;
+  const Buffer* normal_matrices = nullptr;  // null: mat3(skin matrix) is used
+  std::uint32_t joints = 0;                 // matrices in each
+};
+
+// Which skin.comp variant reads a palette (shaders/shared/skin_palette.h).
+enum class PaletteBinding { uniform, storage };
+
 class SkinPass {
  public:
+  static constexpr VkBufferUsageFlags kPaletteUsage =
+      VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+
   static Result<SkinPass> create(const Context& context);
 
   // Uploads a skinned primitive's bind-pose data (influences_per_vertex must be ≥ 1).
   static Result<SkinnedPrimitive> upload(Context& context, const anim::Primitive& primitive);
 
-  // Records the dispatch. `normal_matrices` may be null: then mat3(skin matrix) is used.
+  // uniform for palettes of at most kSkinUniformPaletteJoints joints (when the device's
+  // maxUniformBufferRange holds that many), storage beyond.
+  PaletteBinding binding_for(std::uint32_t joints) const;
+
+  // Records the dispatch, and no barrier: the dispatches of a frame write disjoint outputs, so
+  // the caller records one record_outputs_barrier after all of them.
   // `morph_weights`: one float per morph target (the primitive's slice of PoseBuffers::
-  // morph_weights); null = no morphing. A barrier making the outputs visible to later
-  // vertex/fragment/compute reads is recorded too.
+  // morph_weights); null = no morphing. `binding` overrides binding_for (tests compare the
+  // variants); uniform needs palette.joints ≤ kSkinUniformPaletteJoints.
   void record(const Context& context, VkCommandBuffer commands, const SkinnedPrimitive& primitive,
-              const Buffer& skin_matrices, const Buffer* normal_matrices,
-              const Buffer* morph_weights = nullptr) const;
+              const SkinPalette& palette, const Buffer* morph_weights = nullptr,
+              std::optional<PaletteBinding> binding = std::nullopt) const;
+
+  // Makes every earlier dispatch's outputs visible to later vertex/fragment/compute reads.
+  static void record_outputs_barrier(VkCommandBuffer commands);
 
   static constexpr const char* kName = "skin";
 
  private:
-  Pipeline pipeline_;
+  Pipeline uniform_pipeline_, storage_pipeline_;
+  std::uint32_t uniform_joints_ = 0;  // most joints the uniform variant takes on this device
 };
 
 }  // namespace proxygi::gpu

@@ -54,9 +54,9 @@ TEST_F(SkinMorphTest, MatchesCpuMorphThenSkinning) {
     const auto& palette = pose.skin_matrices[std::size_t(node.skin)];
     const auto& normal_palette = pose.normal_matrices[std::size_t(node.skin)];
     auto skin_buffer = create_buffer_with_data(context(), as_bytes(std::span<const glm::mat4>(palette)),
-                                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+                                               SkinPass::kPaletteUsage);
     auto normal_buffer = create_buffer_with_data(context(), as_bytes(std::span<const glm::mat4>(normal_palette)),
-                                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+                                                 SkinPass::kPaletteUsage);
     ASSERT_TRUE(skin_buffer.ok() && normal_buffer.ok());
     for (anim::Primitive primitive : mannequin.meshes[std::size_t(node.mesh)].primitives) {
       ASSERT_EQ(primitive.normals.size(), primitive.positions.size());
@@ -96,7 +96,10 @@ TEST_F(SkinMorphTest, MatchesCpuMorphThenSkinning) {
       ASSERT_EQ(uploaded->morph_targets, 3u);
       ASSERT_TRUE(context()
                       .submit_and_wait([&](VkCommandBuffer commands) {
-                        pass->record(context(), commands, *uploaded, *skin_buffer, &*normal_buffer, &*weight_buffer);
+                        pass->record(context(), commands, *uploaded,
+                                     SkinPalette{&*skin_buffer, &*normal_buffer, std::uint32_t(palette.size())},
+                                     &*weight_buffer);
+                        SkinPass::record_outputs_barrier(commands);
                       })
                       .ok());
       const auto gpu_positions = read_vec4s(context(), uploaded->world_positions, vertices);

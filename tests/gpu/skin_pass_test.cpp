@@ -19,8 +19,7 @@ using SkinPassTest = testing::GpuTest;
 using testing::read_vec4s;
 
 Result<Buffer> matrices_buffer(Context& context, const std::vector<glm::mat4>& matrices) {
-  return create_buffer_with_data(context, as_bytes(std::span<const glm::mat4>(matrices)),
-                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  return create_buffer_with_data(context, as_bytes(std::span<const glm::mat4>(matrices)), SkinPass::kPaletteUsage);
 }
 
 void compare_pose(Context& context, const anim::Character& character, int clip, float time, bool normal_matrices) {
@@ -60,8 +59,10 @@ void compare_pose(Context& context, const anim::Character& character, int clip, 
       ASSERT_TRUE(uploaded.ok()) << uploaded.message();
       ASSERT_TRUE(context
                       .submit_and_wait([&](VkCommandBuffer commands) {
-                        pass->record(context, commands, *uploaded, *skin_buffer,
-                                     normal_matrices ? &*normal_buffer : nullptr);
+                        pass->record(context, commands, *uploaded,
+                                     SkinPalette{&*skin_buffer, normal_matrices ? &*normal_buffer : nullptr,
+                                                 std::uint32_t(palette.size())});
+                        SkinPass::record_outputs_barrier(commands);
                       })
                       .ok());
       const auto gpu_positions = read_vec4s(context, uploaded->world_positions, cpu_positions.size());
