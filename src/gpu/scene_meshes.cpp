@@ -47,9 +47,10 @@ Status SceneRenderer::upload_instances() {
     model_textures_.push_back(std::make_unique<ModelTextures>(ModelTextures{model.get(), std::move(*textures)}));
   }
   instances_.clear();
-  // Index and uv buffers depend only on the model's primitive: uploaded once per model and
-  // shared by its instances (the crowd's 20 mannequins hold one copy).
+  // Index, uv and bind-pose buffers depend only on the model's primitive: uploaded once per model
+  // and shared by its instances (the crowd's 20 mannequins hold one copy).
   struct Shared {
+    std::shared_ptr<const SkinBindPose> bind_pose;
     std::shared_ptr<const Buffer> indices, uvs;
     std::shared_ptr<const VsglTriangleOrders> vsgl_orders;
   };
@@ -83,9 +84,11 @@ Status SceneRenderer::upload_instances() {
           primitive.joints.assign(primitive.positions.size(), 0);
           primitive.weights.assign(primitive.positions.size(), 1.0f);
         }
-        auto uploaded = SkinPass::upload(context_, primitive);
-        if (!uploaded) return uploaded.error();
         Shared& buffers = shared[{source.model, node, draw.index_counts.size()}];
+        auto uploaded = buffers.bind_pose ? SkinPass::instantiate(context_, buffers.bind_pose)
+                                          : SkinPass::upload(context_, primitive);
+        if (uploaded && !buffers.bind_pose) buffers.bind_pose = uploaded->bind_pose;
+        if (!uploaded) return uploaded.error();
         if (!buffers.indices) {
           // Storage too: the VSGL lights pass reads the triangles (indirect_method vsgl).
           auto indices = create_buffer_with_data(context_, as_bytes(std::span<const std::uint32_t>(primitive.indices)),

@@ -21,11 +21,11 @@ std::span<const std::uint8_t> bytes_of(const std::vector<T>& values) {
 }
 
 // Dense target-major delta arrays (zeros where a target has none), as skin.comp reads them.
-Status upload_morph_targets(Context& context, const anim::Primitive& primitive, SkinnedPrimitive& out) {
+Status upload_morph_targets(Context& context, const anim::Primitive& primitive, bool has_normals, SkinBindPose& out) {
   const std::size_t vertices = primitive.positions.size(), targets = primitive.morph_targets.size();
   if (targets == 0) return {};
   std::vector<glm::vec3> positions(targets * vertices, glm::vec3(0.0f)), normals;
-  if (out.has_normals) normals.assign(targets * vertices, glm::vec3(0.0f));
+  if (has_normals) normals.assign(targets * vertices, glm::vec3(0.0f));
   for (std::size_t t = 0; t < targets; ++t) {
     const anim::MorphTarget& target = primitive.morph_targets[t];
     const std::string what = "skin pass: morph target " + std::to_string(t);
@@ -36,18 +36,17 @@ Status upload_morph_targets(Context& context, const anim::Primitive& primitive, 
       return make_error(what + ": " + std::to_string(target.normal_deltas.size()) + " normal deltas, expected " +
                         std::to_string(vertices));
     std::copy(target.position_deltas.begin(), target.position_deltas.end(), positions.begin() + std::ptrdiff_t(t * vertices));
-    if (out.has_normals)
+    if (has_normals)
       std::copy(target.normal_deltas.begin(), target.normal_deltas.end(), normals.begin() + std::ptrdiff_t(t * vertices));
   }
   auto position_buffer = create_buffer_with_data(context, bytes_of(positions), kStorage);
   if (!position_buffer) return position_buffer.error();
   out.position_deltas = std::move(*position_buffer);
-  if (out.has_normals) {
+  if (has_normals) {
     auto normal_buffer = create_buffer_with_data(context, bytes_of(normals), kStorage);
     if (!normal_buffer) return normal_buffer.error();
     out.normal_deltas = std::move(*normal_buffer);
   }
-  out.morph_targets = std::uint32_t(targets);
   return {};
 }
 
@@ -80,7 +79,8 @@ Result<SkinPass> SkinPass::create(const Context& context) {
 Result<SkinnedPrimitive> SkinPass::upload(Context& context, const anim::Primitive& primitive) {
   if (primitive.influences_per_vertex < 1) return make_error("skin pass: primitive has no skin influences");
   if (primitive.positions.empty()) return make_error("skin pass: primitive has no vertices");
-  SkinnedPrimitive out;
+  auto bind_pose = std::make_shared<SkinBindPose>();
+  SkinBindPose& out = *bind_pose;
   out.vertex_count = static_cast<std::uint32_t>(primitive.positions.size());
   out.influences = static_cast<std::uint32_t>(primitive.influences_per_vertex);
   out.has_normals = primitive.normals.size() == primitive.positions.size();
@@ -94,8 +94,8 @@ Result<SkinnedPrimitive> SkinPass::upload(Context& context, const anim::Primitiv
     std::span<const std::uint8_t> bytes;
   };
   const Upload uploads[] = {
-      {&out.bind_positions, bytes_of(primitive.positions)},
-      {&out.bind_normals, out.has_normals ? bytes_of(primitive.normals) : bytes_of(dummy_normal)},
+      {&out.positions, bytes_of(primitive.positions)},
+      {&out.normals, out.has_normals ? bytes_of(primitive.normals) : bytes_of(dummy_normal)},
       {&out.joints, bytes_of(joints)},
       {&out.weights, bytes_of(primitive.weights)},
   };
@@ -104,7 +104,18 @@ Result<SkinnedPrimitive> SkinPass::upload(Context& context, const anim::Primitiv
     if (!buffer) return buffer.error();
     *item.target = std::move(*buffer);
   }
-  if (Status morphs = upload_morph_targets(context, primitive, out); !morphs) return morphs.error();
+  if (Status morphs = upload_morph_targets(context, primitive, out.has_normals, out); !morphs) return morphs.error();
+  out.morph_targets = std::uint32_t(primitive.morph_targets.size());
+  return instantiate(context, std::move(bind_pose));
+}
+
+Result<SkinnedPrimitive> SkinPass::instantiate(const Context& context, std::shared_ptr<const SkinBindPose> bind_pose) {
+  SkinnedPrimitive out;
+  out.vertex_count = bind_pose->vertex_count;
+  out.influences = bind_pose->influences;
+  out.has_normals = bind_pose->has_normals;
+  out.morph_targets = bind_pose->morph_targets;
+  out.bind_pose = std::move(bind_pose);
   const VkDeviceSize output_bytes = VkDeviceSize(out.vertex_count) * sizeof(float) * 4;
   const VkBufferUsageFlags output_usage = kStorage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
   auto positions = Buffer::create(context, output_bytes, output_usage, MemoryKind::device_local);
@@ -125,9 +136,9 @@ void SkinPass::record(const Context& context, VkCommandBuffer commands, const Sk
                       std::optional<PaletteBinding> binding) const {
   // Without morphing the delta and weight bindings are never read: any buffer fills them.
   const bool morphing = morph_weights != nullptr && primitive.morph_targets > 0;
-  const Buffer& position_deltas = morphing ? primitive.position_deltas : primitive.bind_positions;
-  const Buffer& normal_deltas =
-      morphing && primitive.has_normals ? primitive.normal_deltas : primitive.bind_normals;
+  const SkinBindPose& bind = *primitive.bind_pose;
+  const Buffer& position_deltas = morphing ? bind.position_deltas : bind.positions;
+  const Buffer& normal_deltas = morphing && primitive.has_normals ? bind.normal_deltas : bind.normals;
   const bool uniform = binding.value_or(binding_for(palette.joints)) == PaletteBinding::uniform;
   const Pipeline& pipeline = uniform ? uniform_pipeline_ : storage_pipeline_;
   const Buffer& skin_matrices = *palette.skin_matrices;
@@ -135,15 +146,15 @@ void SkinPass::record(const Context& context, VkCommandBuffer commands, const Sk
   context.begin_label(commands, kName);
   pipeline.bind(commands);
   DescriptorPush descriptors;
-  descriptors.storage_buffer(gpu_layout::kSkinBindBindPositions, primitive.bind_positions)
-      .storage_buffer(gpu_layout::kSkinBindBindNormals, primitive.bind_normals)
-      .storage_buffer(gpu_layout::kSkinBindJoints, primitive.joints)
-      .storage_buffer(gpu_layout::kSkinBindWeights, primitive.weights)
+  descriptors.storage_buffer(gpu_layout::kSkinBindBindPositions, bind.positions)
+      .storage_buffer(gpu_layout::kSkinBindBindNormals, bind.normals)
+      .storage_buffer(gpu_layout::kSkinBindJoints, bind.joints)
+      .storage_buffer(gpu_layout::kSkinBindWeights, bind.weights)
       .storage_buffer(gpu_layout::kSkinBindOutPositions, primitive.world_positions)
       .storage_buffer(gpu_layout::kSkinBindOutNormals, primitive.world_normals)
       .storage_buffer(gpu_layout::kSkinBindPositionDeltas, position_deltas)
       .storage_buffer(gpu_layout::kSkinBindNormalDeltas, normal_deltas)
-      .storage_buffer(gpu_layout::kSkinBindMorphWeights, morphing ? *morph_weights : primitive.weights);
+      .storage_buffer(gpu_layout::kSkinBindMorphWeights, morphing ? *morph_weights : bind.weights);
   if (uniform)
     descriptors.uniform_buffer(gpu_layout::kSkinBindSkinMatrices, skin_matrices)
         .uniform_buffer(gpu_layout::kSkinBindNormalMatrices, normal_matrices);

@@ -19,17 +19,27 @@ namespace proxygi::gpu {
 
 class Context;
 
-struct SkinnedPrimitive {
+// A skinned primitive's static bind-pose inputs, uploaded once per model primitive and shared
+// by every instance of it (the crowd's 20 mannequins read one copy).
+struct SkinBindPose {
   std::uint32_t vertex_count = 0;
   std::uint32_t influences = 0;
   bool has_normals = false;
-  Buffer bind_positions;   // float × 3 per vertex
-  Buffer bind_normals;     // float × 3 per vertex (one dummy float when absent)
+  std::uint32_t morph_targets = 0;
+  Buffer positions;        // float × 3 per vertex
+  Buffer normals;          // float × 3 per vertex (one dummy float when absent)
   Buffer joints;           // uint16 × influences per vertex, packed in uints
   Buffer weights;          // float × influences per vertex
-  std::uint32_t morph_targets = 0;
   Buffer position_deltas;  // float × 3, target-major (layouts.h SkinPush); absent without targets
   Buffer normal_deltas;    // same layout (zeros where a target has none); absent without normals
+};
+
+struct SkinnedPrimitive {
+  std::uint32_t vertex_count = 0;  // these four as in bind_pose
+  std::uint32_t influences = 0;
+  bool has_normals = false;
+  std::uint32_t morph_targets = 0;
+  std::shared_ptr<const SkinBindPose> bind_pose;
   Buffer world_positions;  // out: vec4 per vertex (also usable as a vertex-pulling input)
   Buffer world_normals;    // out: vec4 per vertex
 };
@@ -54,6 +64,8 @@ class SkinPass {
 
   // Uploads a skinned primitive's bind-pose data (influences_per_vertex must be ≥ 1).
   static Result<SkinnedPrimitive> upload(Context& context, const anim::Primitive& primitive);
+  // Another instance of an uploaded primitive: its bind pose shared, outputs of its own.
+  static Result<SkinnedPrimitive> instantiate(const Context& context, std::shared_ptr<const SkinBindPose> bind_pose);
 
   // uniform for palettes of at most kSkinUniformPaletteJoints joints (when the device's
   // maxUniformBufferRange holds that many), storage beyond.
