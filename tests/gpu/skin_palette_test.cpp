@@ -2,7 +2,9 @@
 // kSkinUniformPaletteJoints joints skinned through the uniform and the storage variant gives the
 // same bytes, and one joint more takes the storage variant; both against the CPU twin
 // (anim::SkinningJob) within 1e-5 × the bounding-box diagonal. Every joint, the last included,
-// moves some vertex, so a palette read short or shifted fails the comparison.
+// moves some vertex, so a palette read short or shifted fails the comparison. Also: two
+// instances of one uploaded primitive share its bind pose and, skinned in one submit with one
+// barrier after both dispatches, each get their own palette's result.
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -133,6 +135,35 @@ TEST_F(SkinPaletteTest, OneJointOverTheLimitTakesTheStorageVariant) {
   ASSERT_TRUE(uploaded.ok()) << uploaded.message();
   ASSERT_EQ(pass->binding_for(std::uint32_t(palette.size())), PaletteBinding::storage);
   expect_matches_cpu(primitive, palette, skin_on_gpu(context(), *pass, *uploaded, palette, std::nullopt));
+}
+
+TEST_F(SkinPaletteTest, InstancesShareTheBindPoseAndSkinIndependently) {
+  auto pass = SkinPass::create(context());
+  ASSERT_TRUE(pass.ok()) << pass.message();
+  constexpr std::uint32_t kJoints = 40;
+  const anim::Primitive primitive = synthetic_primitive(kJoints);
+  auto first = SkinPass::upload(context(), primitive);
+  ASSERT_TRUE(first.ok()) << first.message();
+  auto second = SkinPass::instantiate(context(), first->bind_pose);
+  ASSERT_TRUE(second.ok()) << second.message();
+  EXPECT_EQ(first->bind_pose.get(), second->bind_pose.get());
+  EXPECT_NE(first->world_positions.handle(), second->world_positions.handle());
+  std::vector<glm::mat4> palette_a = synthetic_palette(kJoints), palette_b = palette_a;
+  for (glm::mat4& m : palette_b) m = glm::translate(glm::mat4(1.0f), glm::vec3(2.0f, -1.0f, 0.5f)) * m;
+  auto buffer_a = create_buffer_with_data(context(), as_bytes(std::span<const glm::mat4>(palette_a)), SkinPass::kPaletteUsage);
+  auto buffer_b = create_buffer_with_data(context(), as_bytes(std::span<const glm::mat4>(palette_b)), SkinPass::kPaletteUsage);
+  ASSERT_TRUE(buffer_a.ok() && buffer_b.ok());
+  ASSERT_TRUE(context()
+                  .submit_and_wait([&](VkCommandBuffer commands) {
+                    pass->record(context(), commands, *first, SkinPalette{&*buffer_a, nullptr, kJoints});
+                    pass->record(context(), commands, *second, SkinPalette{&*buffer_b, nullptr, kJoints});
+                    SkinPass::record_outputs_barrier(commands);
+                  })
+                  .ok());
+  for (const auto& [uploaded, palette] : {std::pair{&*first, &palette_a}, std::pair{&*second, &palette_b}})
+    expect_matches_cpu(primitive, *palette,
+                       {read_vec4s(context(), uploaded->world_positions, uploaded->vertex_count),
+                        read_vec4s(context(), uploaded->world_normals, uploaded->vertex_count)});
 }
 
 }  // namespace
