@@ -1,6 +1,6 @@
 // proxygi bench chart [--json] [--out DIR] [--cache DIR] [--size N] [--frames N (3)] [--timing-frames N (8)]
 //   [--reference-spp N] [--scenes a,b] [--shared DIR] [--lighting sh|full] [--quick]
-//   [--references-only] [--shard I/N]
+//   [--references-only] [--shard I/N] [--regions]
 // proxygi bench chart --merge SHARD_DIR... [--out DIR] [--json] [--timings-from FILE]
 // The speed–accuracy chart: for the default scene and each shared character, a few frames of
 // motion, every proxy setting, the vertex and AO baselines, and path tracing at 1, 4, 16, 64 spp
@@ -11,6 +11,8 @@
 // by later runs. --shard measures one shard of the chart's units into DIR/bench-chart-shard.json;
 // --merge joins shards into the chart a single run writes (bench_chart_shards.h). A single run
 // also writes the bounce chart, DIR/bench-chart-bounce.csv, .md and .png (bench_chart_bounce.h).
+// --regions scores every row also per region of the reference and counts its bounds
+// (study/chart_regions.h): columns in the CSV and JSON, a table per scene in the markdown.
 #include <unistd.h>
 
 #include <cstdio>
@@ -47,6 +49,7 @@ struct ChartArgs {
   std::string timings_from;
   std::string device;
   bool unshadowed_senders = false;
+  bool regions = false;
 };
 
 // Path-tracing rows of one scene: per (samples, guided) the mean over its frames.
@@ -181,6 +184,9 @@ int run_bench_chart(const ChartArgs& args) {
       if (!tracer) return fail_runtime("bench chart: " + chart.name + ": " + tracer.message());
       auto reference = study::load_or_render_reference(chart, frame, **tracer, reference_options);
       if (!reference) return fail_runtime("bench chart: " + chart.name + " reference: " + reference.message());
+      if (args.regions && !args.references_only)
+        if (Status attached = study::attach_chart_regions(*reference, *sources, reference_options); !attached)
+          return fail_runtime("bench chart: " + chart.name + " regions: " + attached.message());
       if (!args.references_only && path_tracing) {
         auto scores = study::score_path_tracing(**tracer, *reference, sample_counts, reference_options);
         if (!scores) return fail_runtime("bench chart: " + chart.name + " path tracing: " + scores.message());
@@ -231,6 +237,7 @@ int run_bench_chart(const ChartArgs& args) {
   report.lighting = args.lighting == "full" ? "full environment" : "environment band-limited to SH order 6";
   if (args.unshadowed_senders) report.lighting += ", characters lit without shadows where they reflect light";
   for (const study::ChartScene& chart : *scenes) report.scenes.push_back(chart.name);
+  report.regions = args.regions;
   if (!args.shard.empty()) {
     const ChartShard measured{report, args.quick, shard, units, std::move(rows)};
     std::error_code created;
@@ -278,6 +285,9 @@ void add_bench_chart_command(CLI::App& bench, CommandRunner& runner) {
                     "References light the characters without shadows where they reflect light (the bounce methods' "
                     "assumption; not physical)");
   command->add_flag("--quick", args->quick, "A small grid (default setting and each baseline), 1 and 4 spp");
+  command->add_flag("--regions", args->regions,
+                    "Also score every row per region (shadow, edge, thin, character, contact) and count its bounds "
+                    "(negative, above unshadowed, NaN/Inf)");
   command->add_flag("--references-only", args->references_only, "Only render (or complete) the cached references");
   command->add_option("--shard", args->shard, "I/N: measure only the I-th (0-based) of N contiguous runs of the chart's "
                                               "units (scene x path tracing or setting) into OUT/bench-chart-shard.json");

@@ -98,10 +98,12 @@ fig.savefig(sys.argv[1], dpi=110, format="png")
 }  // namespace
 
 nlohmann::json chart_context_json(const ChartReportContext& context) {
-  return {{"device", context.device},   {"driver", context.driver},
-          {"size", context.size},       {"frames", context.frames},
-          {"timing_frames", context.timing_frames}, {"reference_spp", context.reference_spp},
-          {"lighting", context.lighting}, {"scenes", context.scenes}};
+  nlohmann::json out = {{"device", context.device},   {"driver", context.driver},
+                        {"size", context.size},       {"frames", context.frames},
+                        {"timing_frames", context.timing_frames}, {"reference_spp", context.reference_spp},
+                        {"lighting", context.lighting}, {"scenes", context.scenes}};
+  if (context.regions) out["regions"] = true;  // absent without --regions: files as before
+  return out;
 }
 
 Result<ChartReportContext> chart_context_from_json(const nlohmann::json& json) {
@@ -115,6 +117,7 @@ Result<ChartReportContext> chart_context_from_json(const nlohmann::json& json) {
     context.reference_spp = json.at("reference_spp").get<int>();
     context.lighting = json.at("lighting").get<std::string>();
     context.scenes = json.at("scenes").get<std::vector<std::string>>();
+    context.regions = json.value("regions", false);
     return context;
   } catch (const nlohmann::json::exception& e) {
     return make_error(std::string("chart context: ") + e.what());
@@ -125,9 +128,13 @@ std::string chart_scores_json(const std::vector<study::ChartRow>& rows, const Ch
   nlohmann::json out;
   out["context"] = chart_context_json(context);
   out["rows"] = nlohmann::json::array();
-  for (const study::ChartRow& row : rows)
+  const nlohmann::json full = nlohmann::json::parse(study::to_json(rows));
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const study::ChartRow& row = rows[i];
     out["rows"].push_back({{"scene", row.scene}, {"label", study::row_label(row)}, {"default", row.is_default},
                            {"relative_mse", row.relative_mse}, {"rmse", row.rmse}, {"ssim", row.ssim}, {"flip", row.flip}});
+    if (row.regions.measured) out["rows"].back()["regions"] = full[i].at("regions");
+  }
   return out.dump(1) + "\n";
 }
 
@@ -197,6 +204,20 @@ Status write_chart_report(const std::string& folder, const std::vector<study::Ch
              << goal_line("50x", study::path_tracing_goal(rows, scene))
              << goal_line("2x", study::vertex_goal(rows, scene, order)) << "\n"
              << study::to_markdown(rows, scene);
+  if (context.regions) {
+    markdown << "\n## Error by region\n\n"
+             << "Relative MSE over each region of the reference (study/chart_regions.h): shadow (ground and other "
+                "non-character receivers whose reference direct light is > 5 % below unshadowed), edge (2 px around "
+                "depth or normal jumps), thin (character parts narrower than 4 px), character (the body as receiver), "
+                "contact (ground within 0.3 m of a character); n/a = empty region. Bounds: pixels per frame with a "
+                "channel < 0, above unshadowed + the reference's bounce by > 1/255, or NaN/Inf.\n";
+    std::vector<std::string> scenes;
+    if (goal_scene(rows) == study::kAllScenes) scenes.push_back(study::kAllScenes);
+    for (const std::string& scene : context.scenes) scenes.push_back(scene);
+    for (const std::string& scene : scenes)
+      markdown << "\n### " << (scene == study::kAllScenes ? "mean over scenes" : scene) << "\n\n"
+               << study::to_region_markdown(rows, scene);
+  }
   if (Status s = write_file_atomically(base.string() + ".md", markdown.str()); !s) return s;
   return draw_matplotlib_chart(kChartScript, chart_report_json(rows, context), base.string() + ".png");
 }

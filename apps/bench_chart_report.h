@@ -26,6 +26,7 @@ struct ChartReportContext {
   int reference_spp = 0;
   std::string lighting;
   std::vector<std::string> scenes;
+  bool regions = false;  // --regions: rows carry region errors and bounds (study/chart_regions.h)
 };
 
 // The context without the machine (cpu, threads): what must agree for two runs to be comparable.

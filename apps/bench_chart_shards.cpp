@@ -1,5 +1,6 @@
 #include "apps/bench_chart_shards.h"
 
+#include <array>
 #include <algorithm>
 #include <map>
 #include <tuple>
@@ -15,21 +16,40 @@ using nlohmann::json;
 // left out was dropped from merged charts without a word). `pareto` is recomputed by the merge.
 [[maybe_unused]] void every_row_member_is_carried(const study::ChartRow& row) {
   const auto& [scene, method, sh_order, receiver_scale, upsampling, indirect, samples, milliseconds, relative_mse, rmse,
-               ssim, flip, character_relative_mse, character_luminance_ratio, ground_bounce, pareto, is_default] = row;
+               ssim, flip, character_relative_mse, character_luminance_ratio, regions, ground_bounce, pareto, is_default] = row;
   (void)scene, (void)method, (void)sh_order, (void)receiver_scale, (void)upsampling, (void)indirect, (void)samples;
   (void)milliseconds, (void)relative_mse, (void)rmse, (void)ssim, (void)flip, (void)character_relative_mse;
-  (void)character_luminance_ratio, (void)ground_bounce, (void)pareto, (void)is_default;
+  (void)character_luminance_ratio, (void)regions, (void)ground_bounce, (void)pareto, (void)is_default;
+}
+
+// Region sums exactly as measured (the merge's means and ratios then equal a single run's).
+json regions_json(const study::RegionErrors& regions) {
+  return {{"error_sum", regions.error_sum}, {"pixels", regions.pixels}, {"negative", regions.negative},
+          {"above_unshadowed", regions.above_unshadowed}, {"non_finite", regions.non_finite}};
+}
+
+study::RegionErrors regions_from_json(const json& j) {
+  study::RegionErrors regions;
+  regions.measured = true;
+  regions.error_sum = j.at("error_sum").get<std::array<double, study::kChartRegionCount>>();
+  regions.pixels = j.at("pixels").get<std::array<double, study::kChartRegionCount>>();
+  regions.negative = j.at("negative").get<double>();
+  regions.above_unshadowed = j.at("above_unshadowed").get<double>();
+  regions.non_finite = j.at("non_finite").get<double>();
+  return regions;
 }
 
 // Every field of a row: the shard file must carry it back exactly (doubles round-trip in JSON).
 json row_json(const study::ChartRow& row) {
-  return {{"scene", row.scene},        {"method", row.method},   {"sh_order", row.sh_order},
+  json out = {{"scene", row.scene},        {"method", row.method},   {"sh_order", row.sh_order},
           {"receiver_scale", row.receiver_scale}, {"upsampling", row.upsampling}, {"indirect", row.indirect},
           {"samples", row.samples},    {"ms_per_frame", row.milliseconds}, {"relative_mse", row.relative_mse},
           {"rmse", row.rmse},          {"ssim", row.ssim},       {"flip", row.flip},
           {"character_relative_mse", row.character_relative_mse},
           {"character_luminance_ratio", row.character_luminance_ratio},
           {"ground_bounce", row.ground_bounce}, {"default", row.is_default}};
+  if (row.regions.measured) out["regions"] = regions_json(row.regions);
+  return out;
 }
 
 study::ChartRow row_from_json(const json& j) {
@@ -50,6 +70,7 @@ study::ChartRow row_from_json(const json& j) {
   row.character_luminance_ratio = j.at("character_luminance_ratio").get<double>();
   row.ground_bounce = j.at("ground_bounce").get<bool>();
   row.is_default = j.at("default").get<bool>();
+  if (j.contains("regions")) row.regions = regions_from_json(j.at("regions"));
   return row;
 }
 

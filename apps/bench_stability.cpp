@@ -71,7 +71,7 @@ void add_bench_stability_command(CLI::App& bench, CommandRunner& runner) {
   auto* command = bench.add_subcommand("stability", "Stress sweeps where the methods fail, against the exact answer");
   command->add_flag("--json", args->json, "Print every sweep point as JSON on stdout");
   command->add_flag("--quick", args->quick, "Fewer points, coarser quadrature, 16-256 spp for S10 (a few minutes)");
-  command->add_option("--sweeps", args->sweeps, "Only these sweeps (S1,...,S8,S10)")->delimiter(',');
+  command->add_option("--sweeps", args->sweeps, "Only these sweeps (S1,...,S10)")->delimiter(',');
   command->add_option("--out", args->out, "Folder for bench-stability.json, .md and the charts")->capture_default_str();
   command->add_option("--cache", args->cache, "Folder of cached proxy rigs (S10's scene)")->capture_default_str();
   command->add_option("--chart-csv", args->chart_csv, "bench-chart.csv giving ms per frame (robustness-speed chart) and S10's threshold "

@@ -125,6 +125,78 @@ fig.tight_layout()
 fig.savefig(sys.argv[1], dpi=100, format="png")
 )PY";
 
+// Per-frame traces, one panel per quantity; argv[1] = PNG.
+constexpr const char* kTraceChart = R"PY(
+import json, sys
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+data = json.load(sys.stdin)
+panels = []
+for t in data["traces"]:
+    if t["panel"] not in panels:
+        panels.append(t["panel"])
+fig, axes = plt.subplots(1, len(panels), figsize=(6.4 * len(panels), 4.6), squeeze=False)
+for i, panel in enumerate(panels):
+    ax = axes[0][i]
+    for t in data["traces"]:
+        if t["panel"] == panel:
+            ax.plot(t["x"], t["y"], linewidth=1, label=t["series"])
+    ax.set_xlabel(data["x_label"], fontsize=8)
+    ax.set_ylabel(panel, fontsize=8)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=6, ncol=2)
+fig.suptitle(f'{data["id"]} traces: {data["title"]}', fontsize=9)
+fig.tight_layout()
+fig.savefig(sys.argv[1], dpi=100, format="png")
+)PY";
+
+// Error images at each method's worst point, one panel each (blank: not scored); argv[1] = PNG.
+constexpr const char* kHeatMapChart = R"PY(
+import json, sys
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+data = json.load(sys.stdin)
+maps = data["maps"]
+fig, axes = plt.subplots(1, len(maps), figsize=(5.2 * len(maps), 4.8), squeeze=False)
+for i, m in enumerate(maps):
+    ax = axes[0][i]
+    values = np.array([np.nan if v is None else v for v in m["values"]], dtype=float).reshape(m["height"], m["width"])
+    image = ax.imshow(values, cmap="magma", interpolation="nearest")
+    fig.colorbar(image, ax=ax, fraction=0.046, pad=0.04, label=m["unit"])
+    ax.set_title(m["title"], fontsize=7, wrap=True)
+    ax.set_xticks([])
+    ax.set_yticks([])
+fig.suptitle(f'{data["id"]} error at each method\'s worst point: {data["title"]}', fontsize=9)
+fig.tight_layout()
+fig.savefig(sys.argv[1], dpi=100, format="png")
+)PY";
+
+nlohmann::json traces_json(const study::SweepResult& sweep) {
+  nlohmann::json json = {{"id", sweep.id}, {"title", sweep.title}, {"x_label", sweep.trace_x_label}};
+  json["traces"] = nlohmann::json::array();
+  for (const study::SweepTrace& t : sweep.traces) {
+    nlohmann::json ys = nlohmann::json::array();
+    for (double y : t.y) ys.push_back(json_number(y));
+    json["traces"].push_back({{"panel", t.panel}, {"series", t.series}, {"x", t.x}, {"y", ys}});
+  }
+  return json;
+}
+
+nlohmann::json heat_maps_json(const study::SweepResult& sweep) {
+  nlohmann::json json = {{"id", sweep.id}, {"title", sweep.title}};
+  json["maps"] = nlohmann::json::array();
+  for (const study::SweepHeatMap& m : sweep.heat_maps) {
+    nlohmann::json values = nlohmann::json::array();
+    for (float v : m.values.values) values.push_back(json_number(v));
+    json["maps"].push_back({{"title", m.title}, {"unit", m.unit}, {"width", m.values.width}, {"height", m.values.height},
+                            {"values", values}});
+  }
+  return json;
+}
+
 nlohmann::json sweep_json(const study::SweepResult& sweep) {
   nlohmann::json json = {{"id", sweep.id}, {"title", sweep.title}, {"x_label", sweep.x_label}, {"log_x", sweep.log_x},
                          {"seconds", sweep.seconds}, {"failures", sweep.failures()}, {"points_total", sweep.points.size()}};
@@ -204,6 +276,8 @@ std::string stability_markdown(const std::vector<study::SweepResult>& sweeps) {
       md << "\nFrame outputs: " << b.pixels << ", negative " << b.negative << ", above unshadowed + 1u " << b.over_unshadowed
          << ", NaN/Inf " << b.non_finite << ".\n";
     for (const std::string& note : sweep.notes) md << "- " << note << "\n";
+    if (!sweep.traces.empty()) md << "- per-frame traces: stability-" << sweep.id << "-traces.png\n";
+    if (!sweep.heat_maps.empty()) md << "- error at each method's worst point: stability-" << sweep.id << "-heatmaps.png\n";
     md << "\n";
   }
   return md.str();
@@ -237,9 +311,14 @@ Status write_stability_report(const std::string& out_dir, const std::vector<stud
   const nlohmann::json json = stability_json(sweeps, timings);
   if (Status s = write_file_atomically(dir / "bench-stability.json", std::string_view(json.dump(1))); !s) return s;
   if (Status s = write_file_atomically(dir / "bench-stability.md", std::string_view(stability_markdown(sweeps))); !s) return s;
-  for (const study::SweepResult& sweep : sweeps)
-    if (Status s = draw_matplotlib_chart(kSweepChart, sweep_json(sweep), (dir / ("stability-" + sweep.id + ".png")).string()); !s)
-      return s;
+  for (const study::SweepResult& sweep : sweeps) {
+    const std::string base = (dir / ("stability-" + sweep.id)).string();
+    if (Status s = draw_matplotlib_chart(kSweepChart, sweep_json(sweep), base + ".png"); !s) return s;
+    if (!sweep.traces.empty())
+      if (Status s = draw_matplotlib_chart(kTraceChart, traces_json(sweep), base + "-traces.png"); !s) return s;
+    if (!sweep.heat_maps.empty())
+      if (Status s = draw_matplotlib_chart(kHeatMapChart, heat_maps_json(sweep), base + "-heatmaps.png"); !s) return s;
+  }
   return draw_matplotlib_chart(kRobustnessChart, json, (dir / "stability-robustness-speed.png").string());
 }
 

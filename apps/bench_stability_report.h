@@ -23,7 +23,8 @@ MethodTimings timings_from_chart_csv(const std::string& path, double* best_proxy
 nlohmann::json stability_json(const std::vector<study::SweepResult>& sweeps, const MethodTimings& timings);
 std::string stability_markdown(const std::vector<study::SweepResult>& sweeps);
 std::string stability_summary_text(const std::vector<study::SweepResult>& sweeps);
-// Writes bench-stability.json, .md, stability-<id>.png per sweep and stability-robustness-speed.png.
+// Writes bench-stability.json, .md, stability-<id>.png per sweep (and stability-<id>-traces.png,
+// -heatmaps.png where the sweep has them) and stability-robustness-speed.png.
 Status write_stability_report(const std::string& out_dir, const std::vector<study::SweepResult>& sweeps,
                               const MethodTimings& timings);
 

@@ -1,5 +1,5 @@
 // proxygi compare TEST REFERENCE [--json] [--mask MASK.png] [--error-image OUT.png]
-//   [--unshadowed IMAGE] [--depth IMAGE] [--edge-radius N]: RMSE, relative MSE, SSIM and FLIP of a
+//   [--unshadowed IMAGE] [--depth IMAGE] [--edge-radius N] [--character IMAGE]: RMSE, relative MSE, SSIM and FLIP of a
 // test image against a reference, and both images' mean luminance, over receiver pixels; bounds
 // (negative, NaN/Inf, above unshadowed) and per-region scores (apps/compare_regions.h).
 // Unreadable images, a size mismatch or an empty mask exit with code 2; a failed error-image
@@ -161,6 +161,8 @@ void add_compare_command(CLI::App& app, CommandRunner& runner) {
   command->add_option("--unshadowed", args.regions.unshadowed,
                       "The frame without proxies: bounds above it and the shadow region (reference < 99 % of it)");
   command->add_option("--depth", args.regions.depth, "Eye depth image (red channel, 0 = background): edge band and interior regions");
+  command->add_option("--character", args.regions.character,
+                      "Character region image (the reference's .character.exr, white = character): its region scores");
   command->add_option("--edge-radius", args.regions.edge_radius, "Edge band half-width in pixels (default 1)")->check(CLI::Range(0, 64));
   command->add_option("--error-metric", args.error_metric, "Map drawn by --error-image: flip (0..1) or rmse")
       ->check(CLI::IsMember({"flip", "rmse"}));

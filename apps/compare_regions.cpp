@@ -78,6 +78,11 @@ Result<nlohmann::json> region_scores(const image::ImageF& test, const image::Ima
     out["regions"]["edge_band"] = region(test, reference, edge);
     out["regions"]["interior"] = region(test, reference, study::mask_and_not(all, edge));
   }
+  if (!inputs.character.empty()) {
+    auto character = read_same_size(inputs.character, test, "--character");
+    if (!character) return make_error(character.message());
+    out["regions"]["character"] = region(test, reference, study::mask_and(ref::mask_from_image(*character), all));
+  }
   return out;
 }
 

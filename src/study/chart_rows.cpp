@@ -1,6 +1,7 @@
 #include "study/chart_rows.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <map>
@@ -10,6 +11,58 @@
 #include <nlohmann/json.hpp>
 
 namespace proxygi::study {
+
+double RegionErrors::relative_mse(ChartRegion region) const {
+  const auto r = std::size_t(region);
+  return pixels[r] > 0.0 ? error_sum[r] / pixels[r] : std::numeric_limits<double>::quiet_NaN();
+}
+
+void RegionErrors::add(const RegionErrors& other, double weight) {
+  if (!other.measured) return;
+  measured = true;
+  for (std::size_t r = 0; r < std::size_t(kChartRegionCount); ++r) {
+    error_sum[r] += weight * other.error_sum[r];
+    pixels[r] += weight * other.pixels[r];
+  }
+  negative += weight * other.negative;
+  above_unshadowed += weight * other.above_unshadowed;
+  non_finite += weight * other.non_finite;
+}
+
+namespace {
+
+// Per region, the mean over the rows where it is not empty; the pixel count is the mean over all.
+RegionErrors mean_regions(const std::vector<const ChartRow*>& group) {
+  RegionErrors mean;
+  const double count = double(group.size());
+  for (const ChartRow* row : group) {
+    if (!row->regions.measured) continue;
+    mean.measured = true;
+    mean.negative += row->regions.negative / count;
+    mean.above_unshadowed += row->regions.above_unshadowed / count;
+    mean.non_finite += row->regions.non_finite / count;
+  }
+  for (int r = 0; r < kChartRegionCount; ++r) {
+    double ratio_sum = 0.0, pixels = 0.0;
+    int present = 0;
+    for (const ChartRow* row : group) {
+      pixels += row->regions.pixels[std::size_t(r)] / count;
+      const double value = row->regions.relative_mse(ChartRegion(r));
+      if (!std::isnan(value)) ratio_sum += value, ++present;
+    }
+    if (present > 0 && pixels > 0.0) {
+      mean.pixels[std::size_t(r)] = pixels;
+      mean.error_sum[std::size_t(r)] = ratio_sum / double(present) * pixels;
+    }
+  }
+  return mean;
+}
+
+bool any_regions(const std::vector<ChartRow>& rows) {
+  return std::any_of(rows.begin(), rows.end(), [](const ChartRow& row) { return row.regions.measured; });
+}
+
+}  // namespace
 
 std::string row_label(const ChartRow& row) {
   std::ostringstream text;
@@ -80,6 +133,7 @@ std::vector<ChartRow> mean_over_scenes(const std::vector<ChartRow>& rows) {
     mean.flip /= count;
     mean.character_relative_mse /= count;
     mean.character_luminance_ratio /= count;
+    mean.regions = mean_regions(group);
     mean.pareto = false;
     means.push_back(mean);
   }
@@ -157,16 +211,33 @@ GoalResult vertex_goal(const std::vector<ChartRow>& rows, const std::string& sce
 }
 
 std::string to_csv(const std::vector<ChartRow>& rows) {
+  const bool regions = any_regions(rows);
   std::ostringstream csv;
   csv << "scene,method,label,sh_order,receiver_scale,upsampling,indirect,samples,ms_per_frame,relative_mse,rmse,ssim,"
-         "flip,character_relative_mse,character_luminance_ratio,pareto,default\n";
+         "flip,character_relative_mse,character_luminance_ratio,pareto,default";
+  if (regions) {
+    for (const char* name : kChartRegionNames) csv << ',' << name << "_relative_mse," << name << "_pixels";
+    csv << ",negative_pixels,above_unshadowed_pixels,non_finite_pixels";
+  }
+  csv << '\n';
   csv.precision(6);
-  for (const ChartRow& row : rows)
+  for (const ChartRow& row : rows) {
     csv << row.scene << ',' << row.method << ',' << row_label(row) << ',' << row.sh_order << ',' << row.receiver_scale
         << ',' << row.upsampling << ',' << row.indirect << ',' << row.samples << ',' << row.milliseconds << ','
         << row.relative_mse << ',' << row.rmse << ',' << row.ssim << ',' << row.flip << ',' << row.character_relative_mse
         << ',' << row.character_luminance_ratio << ',' << int(row.pareto) << ','
-        << int(row.is_default) << '\n';
+        << int(row.is_default);
+    if (regions) {
+      for (int r = 0; r < kChartRegionCount; ++r) {
+        const double value = row.regions.relative_mse(ChartRegion(r));
+        csv << ',';
+        if (!std::isnan(value)) csv << value;  // empty: no pixel in the region
+        csv << ',' << row.regions.pixels[std::size_t(r)];
+      }
+      csv << ',' << row.regions.negative << ',' << row.regions.above_unshadowed << ',' << row.regions.non_finite;
+    }
+    csv << '\n';
+  }
   return csv.str();
 }
 
@@ -193,9 +264,54 @@ std::string to_markdown(const std::vector<ChartRow>& rows, const std::string& sc
   return text.str();
 }
 
+std::string to_region_markdown(const std::vector<ChartRow>& rows, const std::string& scene) {
+  std::vector<const ChartRow*> selected;
+  for (const ChartRow& row : rows)
+    if (row.scene == scene && row.regions.measured) selected.push_back(&row);
+  std::stable_sort(selected.begin(), selected.end(), [](const ChartRow* a, const ChartRow* b) {
+    if (a->pareto != b->pareto) return a->pareto;
+    return a->milliseconds < b->milliseconds;
+  });
+  std::ostringstream text;
+  text << "| method | all | shadow | edge | thin | character | contact | negative px | above unshadowed px | NaN/Inf px |\n";
+  text << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  char cell[64];
+  for (const ChartRow* row : selected) {
+    std::string label = row_label(*row);
+    if (row->is_default) label += " (default)";
+    text << "| " << label;
+    std::snprintf(cell, sizeof cell, " | %.4g", row->relative_mse);
+    text << cell;
+    for (int r = 0; r < kChartRegionCount; ++r) {
+      const double value = row->regions.relative_mse(ChartRegion(r));
+      if (std::isnan(value))
+        text << " | n/a";
+      else
+        std::snprintf(cell, sizeof cell, " | %.4g", value), text << cell;
+    }
+    std::snprintf(cell, sizeof cell, " | %.4g | %.4g | %.4g |\n", row->regions.negative, row->regions.above_unshadowed,
+                  row->regions.non_finite);
+    text << cell;
+  }
+  return text.str();
+}
+
 std::string to_json(const std::vector<ChartRow>& rows) {
   nlohmann::json out = nlohmann::json::array();
-  for (const ChartRow& row : rows)
+  for (const ChartRow& row : rows) {
+    nlohmann::json regions = nullptr;
+    if (row.regions.measured) {
+      regions = nlohmann::json::object();
+      for (int r = 0; r < kChartRegionCount; ++r) {
+        const double value = row.regions.relative_mse(ChartRegion(r));
+        regions[kChartRegionNames[std::size_t(r)]] = {
+            {"relative_mse", std::isnan(value) ? nlohmann::json(nullptr) : nlohmann::json(value)},
+            {"pixels", row.regions.pixels[std::size_t(r)]}};
+      }
+      regions["bounds"] = {{"negative_pixels", row.regions.negative},
+                           {"above_unshadowed_pixels", row.regions.above_unshadowed},
+                           {"non_finite_pixels", row.regions.non_finite}};
+    }
     out.push_back({{"scene", row.scene},
                    {"method", row.method},
                    {"label", row_label(row)},
@@ -214,6 +330,8 @@ std::string to_json(const std::vector<ChartRow>& rows) {
                    {"ground_bounce", row.ground_bounce},
                    {"pareto", row.pareto},
                    {"default", row.is_default}});
+    if (row.regions.measured) out.back()["regions"] = regions;
+  }
   return out.dump(2);
 }
 

@@ -7,12 +7,31 @@
 // milliseconds per frame (lower is better) against the error of its image to the converged
 // reference (relative MSE over receiver pixels; lower is better). RMSE, SSIM and HDR-FLIP are
 // carried along for the table.
+#include <array>
 #include <string>
 #include <vector>
 
 namespace proxygi::study {
 
 inline constexpr const char* kAllScenes = "all";  // the scene name of rows averaged over scenes
+
+// `bench chart --regions` (study/chart_regions.h): per region, the sum of the per-pixel relative
+// MSE and the pixel count; per-frame means when added with weight 1/frames. A region's relative
+// MSE is their ratio (NaN when the region is empty on every frame). Bounds: pixels per frame.
+enum class ChartRegion { shadow, edge, thin, character, contact };
+inline constexpr int kChartRegionCount = 5;
+inline constexpr std::array<const char*, kChartRegionCount> kChartRegionNames = {"shadow", "edge", "thin", "character",
+                                                                                 "contact"};
+struct RegionErrors {
+  bool measured = false;
+  std::array<double, kChartRegionCount> error_sum{};
+  std::array<double, kChartRegionCount> pixels{};
+  double negative = 0.0;          // pixels with a channel < 0
+  double above_unshadowed = 0.0;  // pixels with a channel above unshadowed + the reference's bounce by > 1/255
+  double non_finite = 0.0;        // pixels with a NaN or Inf channel
+  double relative_mse(ChartRegion region) const;
+  void add(const RegionErrors& other, double weight);
+};
 
 struct ChartRow {
   std::string scene;
@@ -31,6 +50,7 @@ struct ChartRow {
   // MSE there, and the mean luminance of the row's image over the reference's (1 = as bright).
   double character_relative_mse = 0.0;
   double character_luminance_ratio = 0.0;
+  RegionErrors regions;       // measured only with --regions
   bool ground_bounce = true;  // proxy/ao/vertex: render.ground_bounce (label "no-ground-bounce" when off)
   bool pareto = false;    // on its scene's Pareto front (set by mark_pareto_fronts)
   bool is_default = false;  // the proxy method at the product's default setting (method "proxy" only)
@@ -44,7 +64,8 @@ std::string row_label(const ChartRow& row);
 void mark_pareto_fronts(std::vector<ChartRow>& rows);
 
 // One row per (method, setting) present on every scene: arithmetic means of time and errors over
-// the scenes, scene = kAllScenes. Settings missing on some scene are skipped.
+// the scenes, scene = kAllScenes. Settings missing on some scene are skipped. A region's relative
+// MSE is the mean over the scenes where it is not empty.
 std::vector<ChartRow> mean_over_scenes(const std::vector<ChartRow>& rows);
 
 // The goals, evaluated on one scene's rows (normally kAllScenes).
@@ -64,8 +85,11 @@ GoalResult path_tracing_goal(const std::vector<ChartRow>& rows, const std::strin
 // baseline's at that order runs ≥ 2× faster than it.
 GoalResult vertex_goal(const std::vector<ChartRow>& rows, const std::string& scene, int sh_order);
 
+// With regions measured (any row), the CSV and JSON carry them (columns / a "regions" object) and
+// to_region_markdown tables them; without, the output is as before --regions existed.
 std::string to_csv(const std::vector<ChartRow>& rows);
 std::string to_markdown(const std::vector<ChartRow>& rows, const std::string& scene);
+std::string to_region_markdown(const std::vector<ChartRow>& rows, const std::string& scene);
 std::string to_json(const std::vector<ChartRow>& rows);  // array of objects, one per row
 
 }  // namespace proxygi::study

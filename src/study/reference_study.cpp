@@ -12,6 +12,8 @@
 #include "ref/reference_render_io.h"
 #include "ref/ssim.h"
 #include "scene/camera.h"
+#include "study/chart_regions.h"
+#include "study/stability_metrics.h"
 
 namespace proxygi::study {
 
@@ -224,6 +226,7 @@ Result<FrameReference> load_or_render_reference(const ChartScene& chart, int fra
       return written.error();
   }
   reference.radiance = images.radiance;
+  reference.indirect = images.indirect;
   reference.receivers = ref::mask_from_image(reference.features.mask);
   reference.character = ref::mask_from_image(reference.features.character);
   tracer.region_masks(reference.ground, reference.contact, reference.other);
@@ -232,8 +235,30 @@ Result<FrameReference> load_or_render_reference(const ChartScene& chart, int fra
   return reference;
 }
 
+Status attach_chart_regions(FrameReference& reference, const SceneSources& sources, const ReferenceOptions& options) {
+  auto lighting = reference_lighting_sh(sources.scene, options.lighting, options.reference_order);
+  if (!lighting) return lighting.error();
+  // Center rays that hit something but neither the ground nor other geometry hit a character.
+  const ref::ReceiverMask character_hits = mask_and_not(mask_and_not(reference.receivers, reference.ground), reference.other);
+  ReferenceRegionInputs inputs;
+  inputs.features = &reference.features;
+  inputs.radiance = &reference.radiance;
+  inputs.indirect = &reference.indirect;
+  inputs.receivers = &reference.receivers;
+  inputs.character = &reference.character;
+  inputs.character_hits = &character_hits;
+  inputs.contact = &reference.contact;
+  reference.regions = std::make_shared<const ChartRegions>(make_chart_regions(inputs, *lighting));
+  return {};
+}
+
 Result<ImageScores> score_image(const image::ImageF& test, const FrameReference& reference) {
   ImageScores scores;
+  if (reference.regions) {
+    auto regions = score_regions(test, reference.radiance, *reference.regions);
+    if (!regions) return regions.error();
+    scores.regions = *regions;
+  }
   auto relative = ref::relative_mse(test, reference.radiance, &reference.receivers);
   if (!relative) return relative.error();
   scores.relative_mse = relative->mean;
@@ -264,6 +289,7 @@ void add_scores(ChartRow& row, const ImageScores& scores, double weight) {
   row.flip += weight * scores.flip;
   row.character_relative_mse += weight * scores.character_relative_mse;
   row.character_luminance_ratio += weight * scores.character_luminance_ratio;
+  row.regions.add(scores.regions, weight);
 }
 
 Result<std::vector<PathTracingScore>> score_path_tracing(const FrameTracer& tracer, const FrameReference& reference,

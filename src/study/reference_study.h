@@ -28,6 +28,8 @@
 
 namespace proxygi::study {
 
+struct ChartRegions;  // study/chart_regions.h
+
 inline constexpr std::uint32_t kReferenceSeed = 1;
 inline constexpr std::uint32_t kTestSeed = 977;  // path-tracing rows: independent of the reference
 inline constexpr float kContactRadiusM = 0.3f;   // the "contact" region: ground this close to a character
@@ -48,6 +50,7 @@ struct ReferenceOptions {
 
 struct FrameReference {
   image::ImageF radiance;      // linear, mean of all samples
+  image::ImageF indirect;      // its part that bounced at least once
   ref::PixelFeatures features; // pixel-center features (guide of the filter)
   ref::ReceiverMask receivers; // pixels the center ray hits
   ref::ReceiverMask character; // pixels the center ray hits a character in (the "character" region)
@@ -56,6 +59,8 @@ struct FrameReference {
   ref::ReceiverMask other;     // pixels the center ray hits neither a character nor the ground in (a wall)
   std::uint32_t samples = 0;
   double trace_seconds = 0.0;  // all runs together
+  // bench chart --regions: the region masks (attach_chart_regions); null: regions not scored.
+  std::shared_ptr<const ChartRegions> regions;
 };
 
 struct ImageScores {
@@ -67,6 +72,7 @@ struct ImageScores {
   // luminance of the test over the reference's.
   double character_relative_mse = 0.0;
   double character_luminance_ratio = 0.0;
+  RegionErrors regions;  // when the reference carries regions
 };
 
 // What every frame of one chart scene shares: the scene as the chart gives it, its world (models
@@ -109,6 +115,10 @@ class FrameTracer {
 
 Result<FrameReference> load_or_render_reference(const ChartScene& chart, int frame, const FrameTracer& tracer,
                                                 const ReferenceOptions& options);
+
+// Makes the reference's region masks (chart_regions.h) from its features and the scene's
+// reference lighting; score_image then scores every row on them.
+Status attach_chart_regions(FrameReference& reference, const SceneSources& sources, const ReferenceOptions& options);
 
 Result<ImageScores> score_image(const image::ImageF& test, const FrameReference& reference);
 // Adds weight × scores to the row's errors (a mean over n frames: weight 1/n per frame).

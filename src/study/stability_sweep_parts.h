@@ -2,6 +2,7 @@
 // Helpers the stability sweep files share (not a public contract of the study library).
 #include <chrono>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -15,6 +16,9 @@ namespace proxygi::study {
 // The product's τ the sweeps run HYB at (the setting's default), and the ground receivers' normal.
 inline const float kTau = settings::RenderSettings{}.hyb_tau;
 inline const glm::vec3 kUp{0.0f, 1.0f, 0.0f};
+
+// A posed "character" of five spheres standing on the ground at the origin (S5, S7, S9).
+std::vector<render::Sphere> five_sphere_character();
 
 // Appends a point; it passes when finite and ≤ its metric's threshold.
 void add_point(SweepResult& sweep, std::string method, std::string series, double x, int metric, double value);

@@ -120,7 +120,7 @@ SweepResult overlap_stack(const StabilityOptions& options) {
 
 SweepResult sweep_overlap_stack(const StabilityOptions& options) { return timed(overlap_stack, options); }
 
-std::vector<std::string> stability_sweep_ids() { return {"S1", "S2", "S3", "S4", "S5", "S6", "S7", "S8", "S10"}; }
+std::vector<std::string> stability_sweep_ids() { return {"S1", "S2", "S3", "S4", "S5", "S6", "S7", "S8", "S9", "S10"}; }
 
 Result<SweepResult> run_stability_sweep(const std::string& id, const StabilityOptions& options) {
   if (id == "S1") return sweep_overlap_stack(options);
@@ -131,6 +131,7 @@ Result<SweepResult> run_stability_sweep(const std::string& id, const StabilityOp
   if (id == "S6") return sweep_influence_fade(options);
   if (id == "S7") return sweep_camera_crawl(options);
   if (id == "S8") return sweep_lod_switch(options);
+  if (id == "S9") return sweep_crowd(options);
   if (id == "S10") return sweep_noise_floor(options);
   std::string known;
   for (const std::string& name : stability_sweep_ids()) known += (known.empty() ? "" : ", ") + name;

@@ -17,6 +17,7 @@
 //   S6 influence fade    a sphere from 40r to 2r, η × light: entry step (u), missing shadow (u)
 //   S7 camera crawl      static world, moving camera, k × upsampler: flicker (u) of the error against k = 1 and F, exact reprojection
 //   S8 LOD switch        64 → 8 spheres, hard vs cross-fade: pop (u)
+//   S9 crowd             1..20 characters, 2 m → 0.4 m apart: shadow error (u) against redundant blocking, slopes
 //   S10 noise floor      path tracing at 2 seeds: relative-MSE floor per spp
 // u = 1/255 of the receiver's unshadowed shade (stability_metrics.h). Shading is Rec. 709 luminance
 // of the irradiance. Every sweep also counts the bounds of the frame's output (clamped, as the GPU
@@ -45,6 +46,19 @@ struct SweepPoint {
   bool pass = true;
 };
 
+// Per-frame curves (S6–S8) and per-pixel error images at a method's worst point (S5, S7, S9),
+// drawn by `bench stability` as stability-<id>-traces.png and stability-<id>-heatmaps.png.
+struct SweepTrace {
+  std::string panel;   // the y quantity, with its unit: traces of one panel share an axis
+  std::string series;
+  std::vector<double> x, y;
+};
+struct SweepHeatMap {
+  std::string title;   // method and point
+  std::string unit;
+  ref::Plane values;   // top row first; NaN where nothing is scored (drawn blank)
+};
+
 struct SweepResult {
   std::string id;       // "S1"
   std::string title;
@@ -54,6 +68,9 @@ struct SweepResult {
   std::vector<SweepPoint> points;
   BoundsCounts bounds;                // the frame's outputs over the whole sweep
   std::vector<std::string> notes;     // measured facts beyond the metrics, one sentence each
+  std::string trace_x_label;
+  std::vector<SweepTrace> traces;
+  std::vector<SweepHeatMap> heat_maps;
   double seconds = 0.0;
   std::size_t failures() const;
 };
@@ -68,7 +85,7 @@ struct StabilityOptions {
   double noise_threshold = 0.0;
 };
 
-// "S1" .. "S8", "S10" in order.
+// "S1" .. "S10" in order.
 std::vector<std::string> stability_sweep_ids();
 // Fails on an unknown id (message names it and lists the known ones) or when S10's scene cannot load.
 Result<SweepResult> run_stability_sweep(const std::string& id, const StabilityOptions& options);
@@ -82,6 +99,7 @@ SweepResult sweep_silhouettes(const StabilityOptions& options);       // S5
 SweepResult sweep_influence_fade(const StabilityOptions& options);    // S6
 SweepResult sweep_camera_crawl(const StabilityOptions& options);      // S7
 SweepResult sweep_lod_switch(const StabilityOptions& options);        // S8
+SweepResult sweep_crowd(const StabilityOptions& options);             // S9
 Result<SweepResult> sweep_noise_floor(const StabilityOptions& options);  // S10
 
 }  // namespace proxygi::study

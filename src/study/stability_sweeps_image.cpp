@@ -7,15 +7,16 @@
 #include "study/stability_sweep_parts.h"
 
 namespace proxygi::study {
-namespace {
 
-constexpr float kEpsilon = 0.01f;  // settings::RenderSettings::bilateral_depth_epsilon's default
-
-std::vector<render::Sphere> character() {
+std::vector<render::Sphere> five_sphere_character() {
   const glm::vec3 albedo(0.8f);
   return {{{0.0f, 0.25f, 0.0f}, 0.25f, albedo}, {{0.0f, 0.62f, 0.0f}, 0.15f, albedo}, {{0.0f, 0.85f, 0.0f}, 0.1f, albedo},
           {{0.24f, 0.6f, 0.0f}, 0.06f, albedo}, {{-0.24f, 0.6f, 0.0f}, 0.06f, albedo}};
 }
+
+namespace {
+
+constexpr float kEpsilon = 0.01f;  // settings::RenderSettings::bilateral_depth_epsilon's default
 
 const settings::Upsampling kUpsamplers[2] = {settings::Upsampling::bilateral, settings::Upsampling::bilinear};
 const char* kUpsamplerNames[2] = {"bilateral", "bilinear"};
@@ -44,8 +45,9 @@ SweepResult silhouettes(const StabilityOptions& options) {
   sweep.metrics = {{"edge-band error / interior error (interior floored at 0.1u)", "ratio", 2.0},
                    {"edge-band mean error", "u", INFINITY}};
   const render::FrameTables tables = sweep_tables(sweep_lighting(SweepLight::sky), 4, 8.0);
-  const std::vector<render::Sphere> spheres = character();
+  const std::vector<render::Sphere> spheres = five_sphere_character();
   const int size = options.quick ? 96 : 128;
+  double worst_ratio[2] = {-1.0, -1.0};
   for (float distance : {1.0f, 4.0f, 16.0f}) {
     SweepCamera camera;
     camera.eye = glm::vec3(0.0f, 0.5f, 0.0f) + distance * glm::vec3(1.2f, 0.9f, 2.2f);
@@ -68,8 +70,19 @@ SweepResult silhouettes(const StabilityOptions& options) {
         const ErrorSummary at_edges = absolute_error(test, reference, &edge);
         const ErrorSummary inside = absolute_error(test, reference, &interior);
         const std::string series = std::string(kUpsamplerNames[u]) + " distance " + fixed(distance, 0) + "x";
-        add_point(sweep, kUpsamplerNames[u], series, k, 0, at_edges.mean / std::max(inside.mean, 0.1));
+        const double ratio = at_edges.mean / std::max(inside.mean, 0.1);
+        add_point(sweep, kUpsamplerNames[u], series, k, 0, ratio);
         add_point(sweep, kUpsamplerNames[u], series, k, 1, at_edges.mean);
+        if (ratio > worst_ratio[u]) {  // the heat map at this method's worst point
+          worst_ratio[u] = ratio;
+          SweepHeatMap map{std::string(kUpsamplerNames[u]) + " k=" + std::to_string(k) + ", distance " + fixed(distance, 0) +
+                               "x: |x - x(k=1)|, edge/interior " + fixed(ratio, 1),
+                           "u", ref::Plane(size, size, NAN)};
+          for (std::size_t i = 0; i < map.values.values.size(); ++i)
+            if (covered.contains(i)) map.values.values[i] = std::abs(test.values[i] - reference.values[i]);
+          if (sweep.heat_maps.size() <= std::size_t(u)) sweep.heat_maps.resize(std::size_t(u) + 1);
+          sweep.heat_maps[std::size_t(u)] = std::move(map);
+        }
       }
   }
   sweep.notes.push_back("edge band: 1 px around the silhouettes of the spheres (study::label_edge_band_mask); the camera's field of view "
@@ -89,7 +102,7 @@ SweepResult camera_crawl(const StabilityOptions& options) {
   sweep.metrics = {{"crawl: flicker of the error against k = 1, mean", "u", 0.5}, {"crawl: flicker of the error against k = 1, p99", "u", 2.0},
                    {"flicker F mean (no reference)", "u", 0.5}, {"flicker F p99 (no reference)", "u", 2.0}};
   const render::FrameTables tables = sweep_tables(sweep_lighting(SweepLight::sky), 4, 8.0);
-  const std::vector<render::Sphere> spheres = character();
+  const std::vector<render::Sphere> spheres = five_sphere_character();
   const int size = options.quick ? 64 : 128;
   const int frames = options.quick ? 8 : 60;
   std::vector<SweepCamera> cameras;
@@ -103,8 +116,11 @@ SweepResult camera_crawl(const StabilityOptions& options) {
     cameras.push_back(camera);
     gbuffers.push_back(trace_gbuffer(spheres, camera, size));
   }
-  std::vector<Reprojection> to_frame;
+  std::vector<Reprojection> to_frame, to_previous;
   for (int t = 0; t < frames; ++t) to_frame.push_back(reproject(gbuffers.front(), cameras[std::size_t(t)], gbuffers[std::size_t(t)]));
+  for (int t = 1; t < frames; ++t)
+    to_previous.push_back(reproject(gbuffers[std::size_t(t)], cameras[std::size_t(t - 1)], gbuffers[std::size_t(t - 1)]));
+  double worst_crawl[2] = {-1.0, -1.0};
   std::vector<ref::Plane> exact;  // k = 1
   for (int k : {1, 2, 4, 8})
     for (int u = 0; u < (k == 1 ? 1 : 2); ++u) {
@@ -122,12 +138,48 @@ SweepResult camera_crawl(const StabilityOptions& options) {
       const std::string method = k == 1 ? "k1" : kUpsamplerNames[u];
       const std::string series = k == 1 ? std::string("every pixel") : method;
       if (k > 1) {
+        // Traces: the mean |error| against k = 1 and the temporal-gradient error E_delta against k = 1
+        // (exact reprojection into the previous frame), per frame.
+        const std::string name = method + " k=" + std::to_string(k);
+        SweepTrace level{"mean |x - x(k=1)| over the frame (u)", name, {}, {}};
+        SweepTrace gradient{"temporal-gradient error E_delta against k = 1, mean (u)", name, {}, {}};
+        for (int t = 0; t < frames; ++t) {
+          level.x.push_back(t);
+          level.y.push_back(absolute_error(images[std::size_t(t)], exact[std::size_t(t)]).mean);
+          if (t == 0) continue;
+          gradient.x.push_back(t);
+          gradient.y.push_back(temporal_gradient_error(images[std::size_t(t - 1)], images[std::size_t(t)], exact[std::size_t(t - 1)],
+                                                       exact[std::size_t(t)], to_previous[std::size_t(t - 1)])
+                                   .mean);
+        }
+        sweep.traces.push_back(std::move(level));
+        sweep.traces.push_back(std::move(gradient));
+        if (crawl.mean > worst_crawl[u]) {  // heat map: each point's flicker of the error, in frame 0
+          worst_crawl[u] = crawl.mean;
+          SweepHeatMap map{name + ": flicker of the error against k = 1 (std over frames), mean " + fixed(crawl.mean, 2) + "u", "u",
+                           ref::Plane(size, size, NAN)};
+          for (std::size_t p = 0; p < map.values.values.size(); ++p) {
+            double sum = 0.0, squares = 0.0;
+            bool seen = true;
+            for (int t = 0; t < frames && seen; ++t) {
+              const int q = to_frame[std::size_t(t)].source[p];
+              if (q < 0) seen = false;
+              else sum += errors[std::size_t(t)].values[std::size_t(q)], squares += double(errors[std::size_t(t)].values[std::size_t(q)]) * errors[std::size_t(t)].values[std::size_t(q)];
+            }
+            if (seen) map.values.values[p] = float(std::sqrt(std::max(0.0, squares / frames - (sum / frames) * (sum / frames))));
+          }
+          if (sweep.heat_maps.size() <= std::size_t(u)) sweep.heat_maps.resize(std::size_t(u) + 1);
+          sweep.heat_maps[std::size_t(u)] = std::move(map);
+        }
+      }
+      if (k > 1) {
         add_point(sweep, method, series, k, 0, crawl.mean);
         add_point(sweep, method, series, k, 1, crawl.p99);
       }
       add_point(sweep, method, series, k, 2, f.mean);
       add_point(sweep, method, series, k, 3, f.p99);
     }
+  sweep.trace_x_label = "frame";
   sweep.notes.push_back("exact reprojection: each world point of frame 0 is projected into every frame and kept where the "
                         "same surface is seen there (study::reproject); F at k = 1 is the floor of the metric itself");
   return sweep;

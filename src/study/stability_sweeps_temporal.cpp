@@ -50,8 +50,29 @@ SweepResult influence_fade(const StabilityOptions& options) {
       }
       add_point(sweep, "hyb", name + " light", eta, 0, step);
       add_point(sweep, "hyb", name + " light", eta, 1, missing);
+      if (eta == 15.0f) {  // the default η: the traces behind its two points
+        SweepTrace value{"blocked light (u)", "hyb, " + name + " light", {}, {}};
+        SweepTrace truth_trace{"blocked light (u)", "truth, " + name + " light", {}, {}};
+        SweepTrace change{"per-frame change minus the truth's (u)", "hyb, " + name + " light", {}, {}};
+        for (int t = 0; t < frames; ++t) {
+          const double distance_r = 40.0 - 38.0 * double(t) / double(frames - 1);
+          value.x.push_back(distance_r), truth_trace.x.push_back(distance_r);
+          value.y.push_back(method.values[std::size_t(t)] / (open * kDisplayStep));
+          truth_trace.y.push_back(exact.values[std::size_t(t)] / (open * kDisplayStep));
+          if (t > 0) {
+            change.x.push_back(distance_r);
+            change.y.push_back(((method.values[std::size_t(t)] - method.values[std::size_t(t - 1)]) -
+                                (exact.values[std::size_t(t)] - exact.values[std::size_t(t - 1)])) /
+                               (open * kDisplayStep));
+          }
+        }
+        sweep.traces.push_back(std::move(value));
+        sweep.traces.push_back(std::move(truth_trace));
+        sweep.traces.push_back(std::move(change));
+      }
     }
   }
+  sweep.trace_x_label = "distance of the sphere's center / r (it approaches: time runs right to left), eta = 15";
   sweep.notes.push_back("the fade is over 4 table rows of s = sin(alpha) (about 1.5 % of s's range) below s = 1/eta");
   return sweep;
 }
@@ -112,6 +133,9 @@ SweepResult lod_switch(const StabilityOptions& options) {
   const Reprojection same = Reprojection::identity(receivers, 1);
   double u = 0.0;
   for (float v : open.values) u += v * kDisplayStep / double(receivers);
+  // Traces at the receiver where the hard switch pops most, and the worst pop over receivers per frame.
+  std::size_t watched = 0;
+  SweepTrace reference_trace{"shade at the receiver the hard switch pops most at (u)", "reference (64 spheres)", {}, {}};
   for (int fade : {0, 1, 4, 16}) {
     std::vector<ref::Plane> x;
     for (int t = 0; t < frames; ++t) {
@@ -119,18 +143,37 @@ SweepResult lod_switch(const StabilityOptions& options) {
                                      : std::clamp(1.0f - float(t - switch_frame + 1) / float(fade + 1), 0.0f, 1.0f);
       x.push_back(shade_frame(t, weight).first);
     }
+    const std::string method = fade == 0 ? "hard" : "fade" + std::to_string(fade);
     double worst = 0.0, mean = 0.0;
+    SweepTrace pops{"pop |a_t(x) - a_t(r)|, max over receivers (u)", method, {}, {}};
     for (int t = 1; t + 1 < frames; ++t) {
       const ref::Plane xs[3] = {x[std::size_t(t - 1)], x[std::size_t(t)], x[std::size_t(t + 1)]};
       const ref::Plane rs[3] = {reference[std::size_t(t - 1)], reference[std::size_t(t)], reference[std::size_t(t + 1)]};
       const ErrorSummary pop = pop_error(std::span<const ref::Plane, 3>(xs, 3), std::span<const ref::Plane, 3>(rs, 3), same, same);
       worst = std::max(worst, pop.max / u);
       mean += pop.mean / u / double(frames - 2);
+      pops.x.push_back(t), pops.y.push_back(pop.max / u);
+      if (fade == 0)  // the receiver of the largest hard pop, at the switch
+        for (int i = 0; i < receivers && t == switch_frame; ++i) {
+          auto a = [&](const std::vector<ref::Plane>& s, int j) {
+            return double(s[std::size_t(t + 1)].values[std::size_t(j)]) - 2.0 * s[std::size_t(t)].values[std::size_t(j)] +
+                   s[std::size_t(t - 1)].values[std::size_t(j)];
+          };
+          if (std::abs(a(x, i) - a(reference, i)) > std::abs(a(x, int(watched)) - a(reference, int(watched)))) watched = std::size_t(i);
+        }
     }
-    const std::string method = fade == 0 ? "hard" : "fade" + std::to_string(fade);
+    if (fade == 0)
+      for (int t = 0; t < frames; ++t)
+        reference_trace.x.push_back(t), reference_trace.y.push_back(reference[std::size_t(t)].values[watched] / (open.values[watched] * kDisplayStep));
+    SweepTrace value{"shade at the receiver the hard switch pops most at (u)", method, {}, {}};
+    for (int t = 0; t < frames; ++t) value.x.push_back(t), value.y.push_back(x[std::size_t(t)].values[watched] / (open.values[watched] * kDisplayStep));
+    sweep.traces.push_back(std::move(value));
+    sweep.traces.push_back(std::move(pops));
     add_point(sweep, method, "64 -> 8 spheres", fade, 0, worst);
     add_point(sweep, method, "64 -> 8 spheres", fade, 1, mean);
   }
+  sweep.traces.push_back(std::move(reference_trace));
+  sweep.trace_x_label = "frame (the switch at frame " + std::to_string(switch_frame) + ")";
   return sweep;
 }
 

@@ -1,9 +1,9 @@
 # `bench chart --shard 0/2` and `1/2` merged with `bench chart --merge` give the chart of one
 # unsharded run: bench-chart-scores.json (errors, no times) byte-identical as measured, and with
 # the single run's times fed to the merge (--timings-from) every file, the PNG included.
-# -DPROXYGI=... -DWORK=...
+# -DPROXYGI=... -DWORK=... [-DEXTRA=--regions]
 file(REMOVE_RECURSE ${WORK})
-set(quick --quick --size 48 --frames 1 --reference-spp 8 --scenes default)
+set(quick --quick --size 48 --frames 1 --reference-spp 8 --scenes default ${EXTRA})
 function(chart)
   execute_process(COMMAND ${PROXYGI} bench chart ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT code EQUAL 0)
@@ -32,4 +32,10 @@ execute_process(COMMAND ${PROXYGI} bench chart --merge ${WORK}/shard0 --out ${WO
 if(NOT code EQUAL 2 OR NOT err MATCHES "shard 1/2 is missing")
   message(FATAL_ERROR "merging one of two shards: exit ${code}, ${err}")
 endif()
-message(STATUS "bench chart: 2 shards merged == single run (scores; every file with the single run's times)")
+if(EXTRA STREQUAL "--regions")
+  file(READ ${WORK}/merged/bench-chart-scores.json scores)
+  if(NOT scores MATCHES "\"regions\": {" OR NOT scores MATCHES "\"character\": {")
+    message(FATAL_ERROR "merged --regions scores carry no regions")
+  endif()
+endif()
+message(STATUS "bench chart ${EXTRA}: 2 shards merged == single run (scores; every file with the single run's times)")

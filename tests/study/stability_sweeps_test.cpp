@@ -106,7 +106,30 @@ TEST_P(QuickSweep, OutputsStayInBoundsAndEveryMetricIsMeasured) {
   EXPECT_EQ(b.non_finite, 0u);
 }
 
-INSTANTIATE_TEST_SUITE_P(Stability, QuickSweep, ::testing::Values("S1", "S2", "S3", "S4", "S5", "S6", "S7", "S8"));
+INSTANTIATE_TEST_SUITE_P(Stability, QuickSweep, ::testing::Values("S1", "S2", "S3", "S4", "S5", "S6", "S7", "S8", "S9"));
+
+// S9: packing the same crowd tighter makes more solid angle blocked twice (the x axis) and the
+// log-space sum's shadow error (metric 0) larger; one character alone is the same at any spacing.
+TEST(StabilityCrowd, TighterCrowdsOverlapMoreAndErrMore) {
+  StabilityOptions options;
+  options.quick = true;
+  const SweepResult sweep = sweep_crowd(options);
+  EXPECT_EQ(sweep.metrics[0].threshold, 4.0);
+  auto points = [&](const std::string& series) {
+    std::vector<SweepPoint> found;  // in the sweep's order: 1, 5, 20 characters
+    for (const SweepPoint& p : sweep.points)
+      if (p.series == series && p.metric == 0) found.push_back(p);
+    return found;
+  };
+  const std::vector<SweepPoint> spread = points("hyb spacing 1.0 m"), packed = points("hyb spacing 0.4 m");
+  ASSERT_EQ(spread.size(), 3u);
+  ASSERT_EQ(packed.size(), 3u);
+  EXPECT_GT(packed[2].x, 2.0 * spread[2].x);
+  EXPECT_GT(packed[2].value, spread[2].value);
+  EXPECT_GT(spread[0].x, 0.0);  // the character's own spheres overlap
+  EXPECT_DOUBLE_EQ(packed[0].x, spread[0].x);
+  EXPECT_DOUBLE_EQ(packed[0].value, spread[0].value);
+}
 
 }  // namespace
 }  // namespace proxygi::study
