@@ -10,12 +10,15 @@
 // --json), and reports the goals. References are cached under --cache and reused (or continued)
 // by later runs. --shard measures one shard of the chart's units into DIR/bench-chart-shard.json;
 // --merge joins shards into the chart a single run writes (bench_chart_shards.h). A single run
-// also writes the bounce chart, DIR/bench-chart-bounce.csv, .md and .png (bench_chart_bounce.h).
-// --regions scores every row also per region of the reference and counts its bounds
-// (study/chart_regions.h): columns in the CSV and JSON, a table per scene in the markdown.
+// and a merge also write the bounce chart, DIR/bench-chart-bounce.csv, .md and .png
+// (bench_chart_bounce.h); shards carry its rows. --regions scores every row also per region of the
+// reference and counts its bounds (study/chart_regions.h): columns in the CSV and JSON, a table per
+// scene in the markdown.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <limits>
 
 #include <nlohmann/json.hpp>
 
@@ -73,10 +76,15 @@ void add_path_tracing_rows(const std::string& scene, std::size_t unit,
 // Means over scenes, Pareto fronts, the files and the printed summary: the same for a single
 // run and a merge of shards.
 int finish_chart(const ChartArgs& args, std::vector<study::ChartRow> rows, const ChartReportContext& report,
-                 const std::vector<study::BounceRow>& bounce_rows = {}) {
-  if (!bounce_rows.empty())
+                 std::vector<study::BounceRow> bounce_rows = {}) {
+  if (!bounce_rows.empty()) {
+    if (report.scenes.size() > 1) {
+      std::vector<study::BounceRow> means = study::mean_bounce_over_scenes(bounce_rows);
+      bounce_rows.insert(bounce_rows.begin(), means.begin(), means.end());
+    }
     if (Status written = write_bounce_report(args.out, bounce_rows, report); !written)
       return fail_runtime("bench chart: " + written.message());
+  }
   if (report.scenes.size() > 1) {
     std::vector<study::ChartRow> means = study::mean_over_scenes(rows);
     rows.insert(rows.begin(), means.begin(), means.end());
@@ -103,7 +111,8 @@ int run_merge(const ChartArgs& args) {
     shards.push_back(std::move(*shard));
   }
   ChartReportContext report;
-  auto rows = merge_shards(shards, report);
+  std::vector<study::BounceRow> bounce_rows;
+  auto rows = merge_shards(shards, report, &bounce_rows);
   if (!rows) return fail_bad_input("bench chart " + rows.message());
   if (!args.timings_from.empty()) {
     auto bytes = read_file(args.timings_from, 1u << 28);
@@ -112,8 +121,12 @@ int run_merge(const ChartArgs& args) {
                                    args.timings_from);
         !s)
       return fail_bad_input("bench chart --timings-from: " + s.message());
+    if (Status s = replace_timings(bounce_rows, std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()),
+                                   args.timings_from);
+        !s)
+      return fail_bad_input("bench chart --timings-from: " + s.message());
   }
-  return finish_chart(args, std::move(*rows), report);
+  return finish_chart(args, std::move(*rows), report, std::move(bounce_rows));
 }
 
 int run_bench_chart(const ChartArgs& args) {
@@ -157,10 +170,10 @@ int run_bench_chart(const ChartArgs& args) {
     context = std::move(*created);
   }
   std::vector<UnitRow> rows;
-  // The bounce chart (bench_chart_bounce.h) needs each frame's reference without character
-  // senders; a shard measures the main chart only.
-  const bool bounce_chart = args.shard.empty();
-  std::vector<study::BounceRow> bounce_rows;
+  std::vector<UnitBounceRow> bounce_rows;
+  // A setting rendered only to score the bounce chart (the scene's none setting, in a shard that
+  // holds other bounce settings of the scene but not that one): no row of its own.
+  constexpr std::size_t kNoUnit = std::numeric_limits<std::size_t>::max();
   const std::vector<MethodSetting> grid = method_grid(args.quick);
   const std::size_t units_per_scene = grid.size() + 1;  // path tracing, then each setting
   const std::size_t units = scenes->size() * units_per_scene;
@@ -174,6 +187,15 @@ int run_bench_chart(const ChartArgs& args) {
     for (std::size_t k = 0; k < grid.size(); ++k)
       if (slice.contains(first_unit + 1 + k)) grid_part.push_back(grid[k]), setting_units.push_back(first_unit + 1 + k);
     if (!path_tracing && grid_part.empty()) continue;  // another shard's scene: not even its references
+    // The bounce chart (bench_chart_bounce.h) needs each frame's reference without character
+    // senders and the none setting's frames, for the bounce settings this run measures.
+    const bool bounce_chart = std::any_of(grid_part.begin(), grid_part.end(), bounce_row_setting);
+    if (bounce_chart && std::none_of(grid_part.begin(), grid_part.end(), [](const MethodSetting& setting) {
+          return bounce_row_setting(setting) && setting.indirect_method == settings::IndirectMethod::none;
+        }))
+      for (const MethodSetting& setting : grid)
+        if (bounce_row_setting(setting) && setting.indirect_method == settings::IndirectMethod::none)
+          grid_part.push_back(setting), setting_units.push_back(kNoUnit);
     std::vector<study::FrameReference> references;
     std::vector<study::BounceReference> bounce_references;
     std::vector<std::vector<study::PathTracingScore>> path_tracing_scores;
@@ -205,9 +227,12 @@ int run_bench_chart(const ChartArgs& args) {
     }
     if (args.references_only) continue;
     add_path_tracing_rows(chart.name, first_unit, path_tracing_scores, rows);
+    std::vector<std::pair<std::size_t, study::BounceRow>> scene_bounce_rows;
     const Status measured = run_raster_methods(
         *context, chart, grid_part, references,
-        {args.timing_frames, bounce_chart ? &bounce_references : nullptr, bounce_chart ? &bounce_rows : nullptr}, [&](std::size_t i, const study::ChartRow& row) {
+        {args.timing_frames, bounce_chart ? &bounce_references : nullptr, bounce_chart ? &scene_bounce_rows : nullptr},
+        [&](std::size_t i, const study::ChartRow& row) {
+          if (setting_units[i] == kNoUnit) return;
           // One line rewritten with \r on a terminal, a line per row into a file or pipe.
           if (!args.json && !quiet())
             std::fprintf(stderr, "%s  %s: %zu/%zu %-40s %8.2f ms  relMSE %.4g%s", terminal ? "\r" : "", chart.name.c_str(), i + 1,
@@ -215,6 +240,8 @@ int run_bench_chart(const ChartArgs& args) {
           rows.push_back({setting_units[i], row});
         });
     if (!measured) return fail_runtime("bench chart: " + chart.name + ", " + measured.message());
+    for (auto& [index, row] : scene_bounce_rows)
+      if (setting_units[index] != kNoUnit) bounce_rows.push_back({setting_units[index], std::move(row)});
     if (!args.json && !quiet() && terminal && !grid_part.empty()) std::fprintf(stderr, "\n");
   }
   if (args.references_only) {
@@ -239,7 +266,7 @@ int run_bench_chart(const ChartArgs& args) {
   for (const study::ChartScene& chart : *scenes) report.scenes.push_back(chart.name);
   report.regions = args.regions;
   if (!args.shard.empty()) {
-    const ChartShard measured{report, args.quick, shard, units, std::move(rows)};
+    const ChartShard measured{report, args.quick, shard, units, std::move(rows), std::move(bounce_rows)};
     std::error_code created;
     std::filesystem::create_directories(args.out, created);
     if (created) return fail_runtime("bench chart: " + args.out + ": cannot create: " + created.message());
@@ -252,7 +279,11 @@ int run_bench_chart(const ChartArgs& args) {
   }
   std::vector<study::ChartRow> chart_rows;
   for (UnitRow& r : rows) chart_rows.push_back(std::move(r.row));
-  return finish_chart(args, std::move(chart_rows), report, bounce_rows);
+  std::vector<study::BounceRow> bounce_chart_rows;  // in unit order, as a merge of shards lists them
+  std::stable_sort(bounce_rows.begin(), bounce_rows.end(),
+                   [](const UnitBounceRow& a, const UnitBounceRow& b) { return a.unit < b.unit; });
+  for (UnitBounceRow& r : bounce_rows) bounce_chart_rows.push_back(std::move(r.row));
+  return finish_chart(args, std::move(chart_rows), report, std::move(bounce_chart_rows));
 }
 
 }  // namespace

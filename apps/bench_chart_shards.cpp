@@ -74,6 +74,33 @@ study::ChartRow row_from_json(const json& j) {
   return row;
 }
 
+// Every region of a bounce row's scores, as row_json: exactly (BounceError has three members).
+json error_json(const study::BounceError& e) {
+  return {{"relative_mse", e.relative_mse}, {"luminance_ratio", e.luminance_ratio}, {"pixels", e.pixels}};
+}
+
+study::BounceError error_from_json(const json& j) {
+  return {j.at("relative_mse").get<double>(), j.at("luminance_ratio").get<double>(), j.at("pixels").get<std::size_t>()};
+}
+
+[[maybe_unused]] void every_bounce_member_is_carried(const study::BounceScores& scores, const study::BounceError& error) {
+  const auto& [significant, character, contact, ground, other] = scores;
+  const auto& [relative_mse, luminance_ratio, pixels] = error;
+  (void)significant, (void)character, (void)contact, (void)ground, (void)other;
+  (void)relative_mse, (void)luminance_ratio, (void)pixels;
+}
+
+json bounce_json(const study::BounceScores& b) {
+  return {{"significant", error_json(b.significant)}, {"character", error_json(b.character)},
+          {"contact", error_json(b.contact)},         {"ground", error_json(b.ground)},
+          {"other", error_json(b.other)}};
+}
+
+study::BounceScores bounce_from_json(const json& j) {
+  return {error_from_json(j.at("significant")), error_from_json(j.at("character")), error_from_json(j.at("contact")),
+          error_from_json(j.at("ground")), error_from_json(j.at("other"))};
+}
+
 std::string shard_name(const run::Shard& shard) { return std::to_string(shard.index) + "/" + std::to_string(shard.count); }
 
 }  // namespace
@@ -89,6 +116,13 @@ std::string shard_to_json(const ChartShard& shard) {
     json row = row_json(r.row);
     row["unit"] = r.unit;
     out["rows"].push_back(row);
+  }
+  out["bounce_rows"] = json::array();
+  for (const UnitBounceRow& r : shard.bounce_rows) {
+    json row = row_json(r.row.row);
+    row["unit"] = r.unit;
+    row["bounce"] = bounce_json(r.row.bounce);
+    out["bounce_rows"].push_back(row);
   }
   return out.dump(1) + "\n";
 }
@@ -106,18 +140,24 @@ Result<ChartShard> shard_from_json(std::string_view text, const std::string& whe
       return make_error(where + ": shard " + shard_name(shard.shard) + " is invalid");
     shard.units = j.at("units").get<std::size_t>();
     for (const json& row : j.at("rows")) shard.rows.push_back({row.at("unit").get<std::size_t>(), row_from_json(row)});
+    if (j.contains("bounce_rows"))  // shard files from before the bounce chart was sharded have none
+      for (const json& row : j.at("bounce_rows"))
+        shard.bounce_rows.push_back(
+            {row.at("unit").get<std::size_t>(), study::BounceRow{row_from_json(row), bounce_from_json(row.at("bounce"))}});
     return shard;
   } catch (const json::exception& e) {
     return make_error(where + ": not a " + std::string(kChartShardFile) + ": " + e.what());
   }
 }
 
-Result<std::vector<study::ChartRow>> merge_shards(const std::vector<ChartShard>& shards, ChartReportContext& context) {
+Result<std::vector<study::ChartRow>> merge_shards(const std::vector<ChartShard>& shards, ChartReportContext& context,
+                                                  std::vector<study::BounceRow>* bounce_rows) {
   if (shards.empty()) return make_error("merge: no shards");
   const ChartShard& first = shards.front();
   const json first_context = chart_context_json(first.context);
   std::vector<bool> seen(std::size_t(first.shard.count), false);
   std::vector<UnitRow> all;
+  std::vector<UnitBounceRow> all_bounce;
   for (const ChartShard& shard : shards) {
     const std::string name = "shard " + shard_name(shard.shard);
     if (chart_context_json(shard.context) != first_context || shard.quick != first.quick || shard.units != first.units)
@@ -135,6 +175,12 @@ Result<std::vector<study::ChartRow>> merge_shards(const std::vector<ChartShard>&
                           std::to_string(slice.begin) + ", " + std::to_string(slice.end) + ")");
       all.push_back(row);
     }
+    for (const UnitBounceRow& row : shard.bounce_rows) {
+      if (!slice.contains(row.unit))
+        return make_error("merge: " + name + ": bounce row of unit " + std::to_string(row.unit) + " is outside its slice [" +
+                          std::to_string(slice.begin) + ", " + std::to_string(slice.end) + ")");
+      all_bounce.push_back(row);
+    }
   }
   for (std::size_t i = 0; i < seen.size(); ++i)
     if (!seen[i]) return make_error("merge: shard " + std::to_string(i) + "/" + std::to_string(seen.size()) + " is missing");
@@ -144,6 +190,12 @@ Result<std::vector<study::ChartRow>> merge_shards(const std::vector<ChartShard>&
   context = first.context;
   std::vector<study::ChartRow> rows;
   for (UnitRow& r : all) rows.push_back(std::move(r.row));
+  if (bounce_rows) {
+    std::stable_sort(all_bounce.begin(), all_bounce.end(),
+                     [](const UnitBounceRow& a, const UnitBounceRow& b) { return a.unit < b.unit; });
+    bounce_rows->clear();
+    for (UnitBounceRow& r : all_bounce) bounce_rows->push_back(std::move(r.row));
+  }
   return rows;
 }
 
@@ -161,6 +213,14 @@ Status replace_timings(std::vector<study::ChartRow>& rows, std::string_view timi
     if (found == measured.end()) return make_error(where + ": no time for " + row.scene + " / " + study::row_label(row));
     row.milliseconds = found->second;
   }
+  return {};
+}
+
+Status replace_timings(std::vector<study::BounceRow>& rows, std::string_view timings_text, const std::string& where) {
+  std::vector<study::ChartRow> chart_rows;
+  for (const study::BounceRow& row : rows) chart_rows.push_back(row.row);
+  if (Status s = replace_timings(chart_rows, timings_text, where); !s) return s;
+  for (std::size_t i = 0; i < rows.size(); ++i) rows[i].row.milliseconds = chart_rows[i].milliseconds;
   return {};
 }
 

@@ -20,6 +20,7 @@
 #include "apps/bench_chart_report.h"
 #include "base/result.h"
 #include "run/frame_plan.h"
+#include "study/bounce_rows.h"
 #include "study/chart_rows.h"
 
 namespace proxygi::app {
@@ -31,6 +32,12 @@ struct UnitRow {
   study::ChartRow row;
 };
 
+// A bounce chart row (study/bounce_rows.h) of the unit whose setting it scores.
+struct UnitBounceRow {
+  std::size_t unit = 0;
+  study::BounceRow row;
+};
+
 // What one shard measured. `context.cpu` is not kept (the merge names its own machine).
 struct ChartShard {
   ChartReportContext context;
@@ -38,18 +45,24 @@ struct ChartShard {
   run::Shard shard;
   std::size_t units = 0;  // units of the whole chart
   std::vector<UnitRow> rows;
+  // The bounce rows of the shard's units (a shard renders the scene's none setting too, unscored
+  // in the main chart, when it holds other bounce settings of that scene but not none).
+  std::vector<UnitBounceRow> bounce_rows;
 };
 
 std::string shard_to_json(const ChartShard& shard);
 Result<ChartShard> shard_from_json(std::string_view text, const std::string& where);
 
-// The rows of all shards in unit order, with the context they share. Errors: shards of different
+// The rows of all shards in unit order, with the context they share; `bounce_rows` (when not
+// null) gets the bounce rows in unit order, as a single run lists them. Errors: shards of different
 // charts (device, size, frames, spp, lighting, scenes, grid) or counts, a shard twice or missing,
 // a unit outside its shard's slice.
-Result<std::vector<study::ChartRow>> merge_shards(const std::vector<ChartShard>& shards, ChartReportContext& context);
+Result<std::vector<study::ChartRow>> merge_shards(const std::vector<ChartShard>& shards, ChartReportContext& context,
+                                                  std::vector<study::BounceRow>* bounce_rows = nullptr);
 
 // Replaces each row's ms per frame by the one a bench-chart-timings.json (timings_json) gives for
 // its scene and label; every row must be found. Used to check a merge against a single run.
 Status replace_timings(std::vector<study::ChartRow>& rows, std::string_view timings_text, const std::string& where);
+Status replace_timings(std::vector<study::BounceRow>& rows, std::string_view timings_text, const std::string& where);
 
 }  // namespace proxygi::app

@@ -164,7 +164,7 @@ Status run_raster_methods(gpu::Context& context, const study::ChartScene& chart,
       if (!scored) return make_error("frame " + std::to_string(chart.frames[i]) + " bounce: " + scored.message());
       scores.push_back(*scored);
     }
-    options.bounce_rows->push_back({row, study::mean_bounce_scores(scores)});
+    options.bounce_rows->push_back({index, study::BounceRow{row, study::mean_bounce_scores(scores)}});
   }
   return {};
 }

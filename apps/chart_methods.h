@@ -2,6 +2,7 @@
 // The GPU rows of `proxygi bench chart`: every rasterized method and setting rendered through
 // gpu::SceneRenderer, timed (whole frames, pipelined) and scored against the chart references.
 #include <functional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -41,11 +42,11 @@ study::ChartRow describe_setting(const MethodSetting& setting, const std::string
 
 struct MethodRunOptions {
   int timing_frames = 4;  // pipelined frames timed after two warm-up frames
-  // When set (one per chart frame, as `references`): the bounce chart's rows, appended to
-  // `bounce_rows` after the sweep, for each setting bounce_row_setting accepts, scored against
-  // the grid's indirect_method none setting (which the grid must hold).
+  // When set (one per chart frame, as `references`): the bounce chart's rows with their grid
+  // index, appended to `bounce_rows` after the sweep, for each setting bounce_row_setting
+  // accepts, scored against the grid's indirect_method none setting (which the grid must hold).
   const std::vector<study::BounceReference>* bounce_references = nullptr;
-  std::vector<study::BounceRow>* bounce_rows = nullptr;
+  std::vector<std::pair<std::size_t, study::BounceRow>>* bounce_rows = nullptr;
 };
 
 // The settings the bounce chart scores: the proxy method at the default SH order, receiver scale

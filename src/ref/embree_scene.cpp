@@ -176,6 +176,7 @@ std::optional<SurfaceHit> EmbreeScene::intersect(const glm::vec3& origin, const 
     const SphereShape& sphere = spheres_[query.hit.primID];
     geometric = hit.position - sphere.center;
     hit.albedo = sphere.material.albedo;  // spheres carry no uvs
+    hit.character = sphere.character;
   }
   const float geometric_length = glm::length(geometric);
   if (!(geometric_length > 0.0f)) geometric = -direction;

@@ -60,6 +60,7 @@ struct SphereShape {
   glm::vec3 center{0.0f};
   float radius = 1.0f;
   SurfaceMaterial material;
+  bool character = false;  // as TriangleMesh::character (analytic senders in bounce tests)
 };
 
 struct SurfaceHit {

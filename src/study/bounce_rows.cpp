@@ -23,6 +23,20 @@ std::string cell(double value, const char* format) {
 
 }  // namespace
 
+std::vector<BounceRow> mean_bounce_over_scenes(const std::vector<BounceRow>& rows) {
+  std::vector<ChartRow> chart_rows;
+  for (const BounceRow& row : rows)
+    if (row.row.scene != kAllScenes) chart_rows.push_back(row.row);
+  std::vector<BounceRow> means;
+  for (const ChartRow& mean : mean_over_scenes(chart_rows)) {
+    std::vector<BounceScores> scenes;
+    for (const BounceRow& row : rows)
+      if (row.row.scene != kAllScenes && row_label(row.row) == row_label(mean)) scenes.push_back(row.bounce);
+    means.push_back({mean, mean_bounce_scores(scenes)});
+  }
+  return means;
+}
+
 std::string to_bounce_csv(const std::vector<BounceRow>& rows) {
   std::ostringstream text;
   text << "scene,indirect,ms_per_frame,relative_mse,character_relative_mse";
@@ -55,8 +69,11 @@ std::string to_bounce_markdown(const std::vector<BounceRow>& rows) {
       return x < y;
     });
     const std::size_t pixels = selected.empty() ? 0 : selected.front()->bounce.significant.pixels;
-    text << "\n### " << scene << " (" << pixels << " pixels with a significant bounce)\n\n"
-         << "| indirect | ms/frame | bounce relMSE | bounce brightness | character | contact | ground | other | image relMSE | character image relMSE |\n"
+    if (scene == kAllScenes)
+      text << "\n### Mean over scenes (`" << kAllScenes << "`: each score the mean of the scenes where its region is not empty)\n\n";
+    else
+      text << "\n### " << scene << " (" << pixels << " pixels with a significant bounce)\n\n";
+    text << "| indirect | ms/frame | bounce relMSE | bounce brightness | character | contact | ground | other | image relMSE | character image relMSE |\n"
          << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const BounceRow* r : selected)
       text << "| " << r->row.indirect << " | " << cell(r->row.milliseconds, "%.2f") << " | "

@@ -15,6 +15,11 @@ struct BounceRow {
   BounceScores bounce;   // the bounce alone, mean over the chart's frames
 };
 
+// One row per indirect method present on every scene, scene = kAllScenes: the row part as
+// mean_over_scenes, each region's scores the mean over the scenes where it was not empty
+// (mean_bounce_scores). Rows already of kAllScenes are ignored.
+std::vector<BounceRow> mean_bounce_over_scenes(const std::vector<BounceRow>& rows);
+
 // One line per row: scene, indirect, ms, whole-image and character relMSE, then per region
 // (significant, character, contact, ground, other) bounce relMSE, luminance ratio and pixels; -1 = empty.
 std::string to_bounce_csv(const std::vector<BounceRow>& rows);

@@ -6,6 +6,7 @@
 #include "ref/embree_scene.h"
 #include "ref/path_tracer.h"
 #include "ref/scene_geometry.h"
+#include "study/bounce_rows.h"
 
 namespace proxygi::study {
 namespace {
@@ -97,6 +98,39 @@ TEST(BounceScores, FrameMeanSkipsEmptyRegions) {
   EXPECT_DOUBLE_EQ(mean.significant.luminance_ratio, 0.9);
   EXPECT_DOUBLE_EQ(mean.contact.relative_mse, 0.2);
   EXPECT_EQ(mean.character.relative_mse, -1.0);
+}
+
+TEST(BounceRows, MeanOverScenesPerMethodSkipsEmptyRegionsAndPartialMethods) {
+  const auto row = [](const char* scene, const char* indirect, double ms, double significant, double contact) {
+    BounceRow r;
+    r.row.scene = scene;
+    r.row.method = "proxy";
+    r.row.indirect = indirect;
+    r.row.milliseconds = ms;
+    r.bounce.significant = {significant, 2.0 * significant, 10};
+    if (contact >= 0.0) r.bounce.contact = {contact, 1.0, 4};
+    return r;
+  };
+  const std::vector<BounceRow> rows = {row("a", "averaged", 10.0, 0.5, 0.2), row("a", "vsgl1", 4.0, 0.3, -1.0),
+                                       row("b", "averaged", 20.0, 1.5, -1.0), row("b", "vsgl1", 6.0, 0.9, 0.4),
+                                       row("b", "point", 1.0, 9.0, -1.0)};
+  const std::vector<BounceRow> means = mean_bounce_over_scenes(rows);
+  ASSERT_EQ(means.size(), 2u);  // point is on one scene only
+  EXPECT_EQ(means[0].row.scene, kAllScenes);
+  EXPECT_EQ(means[0].row.indirect, "averaged");
+  EXPECT_DOUBLE_EQ(means[0].row.milliseconds, 15.0);
+  EXPECT_DOUBLE_EQ(means[0].bounce.significant.relative_mse, 1.0);
+  EXPECT_DOUBLE_EQ(means[0].bounce.significant.luminance_ratio, 2.0);
+  EXPECT_DOUBLE_EQ(means[0].bounce.contact.relative_mse, 0.2);  // b's contact was empty
+  EXPECT_EQ(means[0].bounce.other.relative_mse, -1.0);
+  EXPECT_DOUBLE_EQ(means[1].bounce.significant.relative_mse, 0.6);
+  EXPECT_DOUBLE_EQ(means[1].bounce.contact.relative_mse, 0.4);
+  std::vector<BounceRow> with_means = means;
+  with_means.insert(with_means.end(), rows.begin(), rows.end());
+  EXPECT_EQ(mean_bounce_over_scenes(with_means).size(), 2u) << "rows of kAllScenes are not averaged again";
+  const std::string markdown = to_bounce_markdown(with_means);
+  EXPECT_NE(markdown.find("### Mean over scenes"), std::string::npos);
+  EXPECT_LT(markdown.find("### Mean over scenes"), markdown.find("### a ")) << "the mean first, as given";
 }
 
 // A ground and a vertical character quad at x = 0.5 facing it (albedo `quad_albedo`).

@@ -1,6 +1,7 @@
 # `bench chart --shard 0/2` and `1/2` merged with `bench chart --merge` give the chart of one
 # unsharded run: bench-chart-scores.json (errors, no times) byte-identical as measured, and with
-# the single run's times fed to the merge (--timings-from) every file, the PNG included.
+# the single run's times fed to the merge (--timings-from) every file, the PNGs and the bounce
+# chart included (shard 0 holds the proxy and vsgl bounce rows, shard 1 the none setting).
 # -DPROXYGI=... -DWORK=... [-DEXTRA=--regions]
 file(REMOVE_RECURSE ${WORK})
 set(quick --quick --size 48 --frames 1 --reference-spp 8 --scenes default ${EXTRA})
@@ -24,7 +25,8 @@ chart(${quick} --shard 1/2 --out ${WORK}/shard1 --cache ${WORK}/cache_shards)
 chart(--merge ${WORK}/shard0 ${WORK}/shard1 --out ${WORK}/merged)
 same(${WORK}/single/bench-chart-scores.json ${WORK}/merged/bench-chart-scores.json)
 chart(--merge ${WORK}/shard1 ${WORK}/shard0 --out ${WORK}/replayed --timings-from ${WORK}/single/bench-chart-timings.json)
-foreach(file bench-chart-scores.json bench-chart-timings.json bench-chart.csv bench-chart.md bench-chart.png)
+foreach(file bench-chart-scores.json bench-chart-timings.json bench-chart.csv bench-chart.md bench-chart.png
+             bench-chart-bounce.csv bench-chart-bounce.md bench-chart-bounce.png)
   same(${WORK}/single/${file} ${WORK}/replayed/${file})
 endforeach()
 # A shard missing is bad input, named.
