@@ -3,11 +3,11 @@
 //   kVsglStageSums: kVsglTrianglesPerInvocation triangles per invocation of one character draw
 //     (or of one index range of it, render.vsgl_lights > 1), each a diffuse VPL at the
 //     centroid x with normal n = normalize(n0 + n1 + n2), area A and flux Φ = albedo ·
-//     max(E(n), 0) · A (E = Σ L̃_i y_i(n), unshadowed); the workgroup's VPLs are summed serially
+//     max(E(n), 0) · A (E = Σ L̃_i y_i(n) of frame.vsgl_sender_sh, unshadowed); the workgroup's VPLs are summed serially
 //     per invocation, then in a fixed tree (deterministic) into VsglPartial, positions relative
 //     to the group's first centroid.
-//   kVsglStageFit: invocation k sums the partials of light k in order, each shifted to the origin
-//     of the first, and fits ξ_v, λ_v, c_v, μ_v, σ_v² (sh::fit_vsgl).
+//   kVsglStageFit: invocation k sums the partials of light k in order (rsm_sums.comp's first,
+//     render.vsgl_sun), each shifted to the origin of the first with weight, and fits ξ_v, λ_v, c_v, μ_v, σ_v² (sh::fit_vsgl).
 // CPU twin: sh::add_light / sh::fit_vsgl (src/sh/vsgl.h).
 #extension GL_GOOGLE_include_directive : require
 #include "frame_common.glsl"
@@ -48,7 +48,7 @@ void triangle_light(uint triangle, out vec3 center, out vec3 normal, out vec3 fl
   sh_eval_basis_3(normal, basis);
   vec3 irradiance = vec3(0.0);
   for (int i = 0; i < 9; ++i)
-    irradiance += basis[i] * vec3(frame.irradiance_sh[i].x, frame.irradiance_sh[9 + i].x, frame.irradiance_sh[18 + i].x);
+    irradiance += basis[i] * vec3(frame.vsgl_sender_sh[i].x, frame.vsgl_sender_sh[9 + i].x, frame.vsgl_sender_sh[18 + i].x);
   flux = push.base_color.rgb * max(irradiance, vec3(0.0)) * area;
 }
 
@@ -106,7 +106,7 @@ void fit_light() {
   for (uint i = 0u; i < push.partial_count; ++i) {
     VsglPartial partial = partials[i];
     if (uint(partial.origin_light.w) != light) continue;
-    if (first) origin = partial.origin_light.xyz, first = false;
+    if (first && partial.weight_axis.x > 0.0) origin = partial.origin_light.xyz, first = false;
     // Σ w (x − o) = P_j + W d, Σ w ‖x − o‖² = S_j + 2 d·P_j + W ‖d‖², d = o_j − o.
     vec3 d = partial.origin_light.xyz - origin;
     float weight = partial.weight_axis.x;

@@ -100,6 +100,14 @@ struct FrameConstants {
   float occlusion_scale;         // direct[].w × this = visible fraction of the sphere (1/√4π SHEXP, 1 AO)
   uint padding_debug2;
   vec4 irradiance_sh[3u * kIndirectOrder * kIndirectOrder];  // L̃ = L * clamped cosine, order 3, r then g then b; x used
+  // VSGL (render.indirect_method vsgl): the L̃ that lights the vertex VPLs (vsgl_lights.comp):
+  // irradiance_sh without the sun's share when the sun variant is on (sh/vsgl_sun.h), else equal.
+  vec4 vsgl_sender_sh[3u * kIndirectOrder * kIndirectOrder];
+  // The sun variant (render.vsgl_sun; rsm.vert/.frag, rsm_sums.comp), when rsm_toward_sun.w is 1:
+  mat4 rsm_view_projection;          // world → the sun map's Vulkan clip space (sh::RsmView)
+  mat4 rsm_inverse_view_projection;  // its inverse (partial origins)
+  vec4 rsm_toward_sun;               // xyz s (world, unit), w 1: on this frame, 0: off
+  vec4 rsm_texel_flux;               // rgb E_s a_t: the sun's power through one texel (W), a unused
 };
 
 // FrameConstants::composite_mode: how upsample_composite forms display-resolution irradiance.
@@ -176,7 +184,8 @@ struct Receiver {
 PROXYGI_CONST(uint, kVsglMaxLights, 256u);      // characters × render.vsgl_lights per frame
 PROXYGI_CONST(uint, kVsglGroupSize, 64u);       // invocations per workgroup (and lights per fit group)
 PROXYGI_CONST(uint, kVsglTrianglesPerInvocation, 16u);  // a partial sums 64 × 16 triangles
-PROXYGI_CONST(uint, kVsglMaxPartials, 16384u);  // character triangles beyond 16384 × 1024 are skipped
+// Character triangles beyond (kVsglMaxPartials − the sun map's partials) × 1024 are skipped.
+PROXYGI_CONST(uint, kVsglMaxPartials, 20480u);
 PROXYGI_CONST(float, kVsglDiffuseSharpness, 2.0);        // λ_d (sh::kDiffuseLobeSharpness)
 PROXYGI_CONST(float, kVsglMinRelativeVariance, 1e-6);    // sh::kVsglMinRelativeVariance
 PROXYGI_CONST(uint, kVsglStageSums, 0u);
@@ -205,6 +214,32 @@ struct VsglLightsPush {
   uint partial_count;    // stage 1: partials written
   uint light_count;      // stage 1: lights to fit (≤ kVsglMaxLights)
   uint first_triangle;   // stage 0: the draw's first triangle of this dispatch
+  uint padding1;
+};
+
+// ---- the sun variant of VSGL (render.vsgl_sun; sh/vsgl_sun.h is the CPU twin) ----
+// rsm.vert/.frag draw the senders (each light's triangles, as vsgl_lights.comp splits them) into
+// a kRsmSize² orthographic map from the sun: position (w = light + 1; 0: no sender), normal and
+// flux = base color × E_s a_t (0 where n·s ≤ 0). rsm_sums.comp: one dispatch per light, each
+// workgroup sums kVsglGroupSize × kRsmTexelsPerInvocation texels of that light into one
+// VsglPartial (origin: the group's rows at mid depth), which vsgl_lights.comp's fit adds to the
+// vertex VPLs' partials of the same light.
+PROXYGI_CONST(uint, kRsmSize, 256u);                 // texels per side of the sun map
+PROXYGI_CONST(uint, kRsmTexelsPerInvocation, 64u);
+PROXYGI_CONST(uint, kRsmGroupsPerLight, kRsmSize * kRsmSize / (kVsglGroupSize * kRsmTexelsPerInvocation));
+// Push constants of rsm.vert/.frag: one draw per light range.
+struct RsmPush {
+  vec4 base_color;  // linear albedo factor
+  uint light;       // the light these triangles send through
+  uint padding0;
+  uint padding1;
+  uint padding2;
+};
+// Push constants of rsm_sums.comp.
+struct RsmSumsPush {
+  uint light;
+  uint partial_offset;  // the partial of the dispatch's first workgroup
+  uint padding0;
   uint padding1;
 };
 
@@ -248,6 +283,16 @@ PROXYGI_CONST(uint, kVsglBindNormals, 2u);
 PROXYGI_CONST(uint, kVsglBindIndices, 3u);
 PROXYGI_CONST(uint, kVsglBindPartials, 4u);
 PROXYGI_CONST(uint, kVsglBindLights, 5u);
+// rsm.vert/.frag
+PROXYGI_CONST(uint, kRsmBindFrame, 0u);
+PROXYGI_CONST(uint, kRsmBindPositions, 1u);
+PROXYGI_CONST(uint, kRsmBindNormals, 2u);
+// rsm_sums.comp
+PROXYGI_CONST(uint, kRsmSumsBindFrame, 0u);
+PROXYGI_CONST(uint, kRsmSumsBindPosition, 1u);
+PROXYGI_CONST(uint, kRsmSumsBindNormal, 2u);
+PROXYGI_CONST(uint, kRsmSumsBindFlux, 3u);
+PROXYGI_CONST(uint, kRsmSumsBindPartials, 4u);
 // upsample_composite.comp
 PROXYGI_CONST(uint, kCompositeBindFrame, 0u);
 PROXYGI_CONST(uint, kCompositeBindPositionDepth, 1u);
@@ -308,7 +353,8 @@ PROXYGI_CONST(uint, kResolveBindFirstTarget, 2u);
 #ifdef __cplusplus
 static_assert(sizeof(TestPatternPush) == 16);
 static_assert(sizeof(ProxySphere) == 32);
-static_assert(sizeof(FrameConstants) == 128 + 16 * 8 + 16 * 27);
+static_assert(sizeof(FrameConstants) == 128 + 16 * 8 + 16 * 27 + 16 * 27 + 128 + 32);
+static_assert(offsetof(FrameConstants, rsm_view_projection) == 256 + 2 * 16 * 27);
 static_assert(offsetof(FrameConstants, display_width) == 160 && offsetof(FrameConstants, irradiance_sh) == 256);
 static_assert(sizeof(GbufferPush) == 64);
 static_assert(sizeof(Receiver) == 32);
@@ -316,6 +362,7 @@ static_assert(sizeof(CompositePush) == 16);
 static_assert(sizeof(SkinPush) == 32);
 static_assert(sizeof(VertexReceiversPush) == 16);
 static_assert(sizeof(VsglPartial) == 64 && sizeof(VsglLight) == 48 && sizeof(VsglLightsPush) == 48);
+static_assert(sizeof(RsmPush) == 32 && sizeof(RsmSumsPush) == 16);
 }  // namespace proxygi::gpu_layout
 #endif
 

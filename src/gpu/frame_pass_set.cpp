@@ -50,6 +50,8 @@ Result<FramePassSet> FramePassSet::create(Context& context, const FrameConfig& c
   if (Status s = emplace(set.indirect, IndirectPass::create(context, render)); !s) return s.error();
   if (render.indirect_method == settings::IndirectMethod::vsgl)
     if (Status s = emplace(set.vsgl_lights, VsglLightsPass::create(context)); !s) return s.error();
+  if (render.indirect_method == settings::IndirectMethod::vsgl && render.vsgl_sun == settings::VsglSun::automatic)
+    if (Status s = emplace(set.rsm, RsmPass::create(context)); !s) return s.error();
   if (Status s = set.rebuild_sized(context, config); !s) return s.error();
   return set;
 }

@@ -15,6 +15,7 @@
 #include "gpu/shadow_splat_pass.h"
 #include "gpu/upsample_composite_pass.h"
 #include "gpu/vertex_receivers_pass.h"
+#include "gpu/rsm_pass.h"
 #include "gpu/vsgl_lights_pass.h"
 
 namespace proxygi::gpu {
@@ -29,6 +30,7 @@ struct FramePassSet {
   std::optional<ExponentiatePass> exponentiate;
   std::optional<IndirectPass> indirect;
   std::optional<VsglLightsPass> vsgl_lights;             // indirect_method vsgl
+  std::optional<RsmPass> rsm;                            // indirect_method vsgl, vsgl_sun auto
   std::optional<UpsampleCompositePass> upsample_composite;
 
   static Result<FramePassSet> create(Context& context, const FrameConfig& config);

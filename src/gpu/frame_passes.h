@@ -9,6 +9,7 @@
 //   exponentiate_pass.h        exponentiate.comp         log-occlusion, OL table, LH cubes → direct E, (O_p)_0
 //   indirect_pass.h            indirect.comp             proxies, visibility, direct → indirect E, ω_p, shaded
 //   vsgl_lights_pass.h         vsgl_lights.comp          (indirect_method vsgl, in step 6) draws → VSGL lights
+//   rsm_pass.h                 rsm.vert/.frag, rsm_sums.comp  (vsgl_sun auto, sun up; before it) draws → sun map → sums
 //   upsample_composite_pass.h  upsample_composite.comp   G-buffer, shaded, environment → irradiance, HDR, sRGB
 //   vertex_receivers_pass.h    vertex_receivers.comp     (vertex baseline) mesh vertices → receivers
 //   ambient_occlusion_pass.h   ambient_occlusion.comp    (AO baseline) receivers, proxies → direct, shaded

@@ -73,6 +73,15 @@ Status SoftGiFrame::build_targets() {
                              VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT);
   if (!depth) return depth.error();
   targets.depth = std::move(*depth);
+  for (Image* image : {&targets.rsm_position, &targets.rsm_normal, &targets.rsm_flux}) {
+    auto made = Image::create(context_, gpu_layout::kRsmSize, gpu_layout::kRsmSize, kGbufferFormat, target_usage);
+    if (!made) return made.error();
+    *image = std::move(*made);
+  }
+  auto rsm_depth = Image::create(context_, gpu_layout::kRsmSize, gpu_layout::kRsmSize, kDepthFormat,
+                                 VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT);
+  if (!rsm_depth) return rsm_depth.error();
+  targets.rsm_depth = std::move(*rsm_depth);
 
   const VkDeviceSize receivers = config.receiver_count();
   const VkDeviceSize pixels = VkDeviceSize(config.width) * config.height;
@@ -165,6 +174,10 @@ Status SoftGiFrame::upload_tables(const render::FrameTables& tables) {
   uploaded.optimal_linear_max = tables.optimal_linear.max_norm;
   uploaded.cube_size = float(tables.lighting_cube[0].face_size);
   uploaded.irradiance_order3 = tables.irradiance_order3;
+  uploaded.vsgl_sender_order3 = tables.vsgl_sender_order3;
+  uploaded.vsgl_sun = tables.vsgl_sun;
+  uploaded.sun_direction = tables.sun_direction;
+  uploaded.sun_irradiance = tables.sun_irradiance;
   tables_ = std::move(uploaded);
   return {};
 }

@@ -29,8 +29,9 @@ Result<std::shared_ptr<const VsglTriangleOrders>> upload_vsgl_orders(Context& co
     for (std::uint32_t first : grouped.first) orders->first[k].push_back(base + first);
     indices.insert(indices.end(), grouped.indices.begin(), grouped.indices.end());
   }
+  // Index usage too: the sun map draws each light's range (rsm_pass.h).
   auto buffer = create_buffer_with_data(context, as_bytes(std::span<const std::uint32_t>(indices)),
-                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
   if (!buffer) return buffer.error();
   orders->indices = std::move(*buffer);
   return std::shared_ptr<const VsglTriangleOrders>(std::move(orders));

@@ -9,6 +9,7 @@
 #include "base/log.h"
 #include "gpu/pass_timestamps.h"
 #include "gpu/scene_renderer_parts.h"
+#include "render/environment_lighting.h"
 #include "gpu/transfer.h"
 #include "settings/fields.h"
 #include "shaders/shared/layouts.h"
@@ -100,7 +101,8 @@ Result<render::FrameTables> SceneRenderer::make_tables(const settings::RenderSet
   auto environment = world_->environment(settings.sh_order);
   if (!environment) return environment.error();
   const scene::Ground& ground = world_->scene().ground;
-  return render::make_frame_tables((*environment)->lighting, settings, render::GroundInput{ground.enabled, ground.albedo});
+  return render::make_frame_tables((*environment)->lighting, settings, render::GroundInput{ground.enabled, ground.albedo},
+                                   {}, render::scene_sun(world_->scene(), (*environment)->lighting.order));
 }
 
 Status SceneRenderer::wait_all() {

@@ -7,6 +7,7 @@
 #include "gpu/transfer.h"
 #include "settings/fields.h"
 #include "shaders/shared/layouts.h"
+#include "sh/vsgl_sun.h"
 
 namespace proxygi::gpu {
 namespace {
@@ -131,6 +132,26 @@ Status SoftGiFrame::write_slot(std::uint32_t slot, const FrameView& view, std::s
     for (int i = 0; i < 9; ++i)
       constants.irradiance_sh[channel * 9 + i] =
           glm::vec4(tables_.irradiance_order3[std::size_t(channel)][std::size_t(i)], 0, 0, 0);
+  // The sun variant: the map fitted to the proxies' box (sh::rsm_margin); without it the vertex
+  // VPLs keep the whole L̃.
+  slots_[slot].rsm = passes_.rsm && tables_.vsgl_sun && !spheres.empty();
+  const auto& sender = slots_[slot].rsm ? tables_.vsgl_sender_order3 : tables_.irradiance_order3;
+  for (int channel = 0; channel < 3; ++channel)
+    for (int i = 0; i < 9; ++i)
+      constants.vsgl_sender_sh[channel * 9 + i] = glm::vec4(sender[std::size_t(channel)][std::size_t(i)], 0, 0, 0);
+  if (slots_[slot].rsm) {
+    glm::dvec3 low(std::numeric_limits<double>::max()), high(-std::numeric_limits<double>::max());
+    for (const render::Sphere& sphere : spheres) {
+      low = glm::min(low, glm::dvec3(sphere.center) - double(sphere.radius));
+      high = glm::max(high, glm::dvec3(sphere.center) + double(sphere.radius));
+    }
+    const sh::RsmView rsm = sh::fit_rsm_view(glm::dvec3(tables_.sun_direction), low, high, int(gpu_layout::kRsmSize),
+                                             sh::rsm_margin(low, high));
+    constants.rsm_view_projection = glm::mat4(rsm.view_projection());
+    constants.rsm_inverse_view_projection = glm::mat4(glm::inverse(rsm.view_projection()));
+    constants.rsm_toward_sun = glm::vec4(glm::vec3(rsm.toward_sun), 1.0f);
+    constants.rsm_texel_flux = glm::vec4(tables_.sun_irradiance * float(rsm.texel_area()), 0.0f);
+  }
   std::memcpy(slots_[slot].constants.mapped(), &constants, sizeof(constants));
 
   slots_[slot].proxy_count = std::uint32_t(spheres.size());
@@ -192,10 +213,17 @@ void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot_index
           ExponentiatePass::Outputs{&t.direct});
       break;
     case FramePass::indirect:
-      if (passes_.vsgl_lights)
-        run(*passes_.vsgl_lights,
-            VsglLightsPass::Inputs{&slot.constants, draws, std::uint32_t(config_.render.vsgl_lights)},
+      if (passes_.vsgl_lights) {
+        const std::uint32_t per_sender = std::uint32_t(config_.render.vsgl_lights);
+        std::uint32_t sun_partials = 0;
+        if (passes_.rsm && slot.rsm) {
+          run(*passes_.rsm, RsmPass::Inputs{&slot.constants, draws, per_sender},
+              RsmPass::Outputs{&t.rsm_position, &t.rsm_normal, &t.rsm_flux, &t.rsm_depth, &t.vsgl_partials});
+          sun_partials = RsmPass::partial_count(draws, per_sender);
+        }
+        run(*passes_.vsgl_lights, VsglLightsPass::Inputs{&slot.constants, draws, per_sender, sun_partials},
             VsglLightsPass::Outputs{&t.vsgl_partials, &t.vsgl_lights});
+      }
       run(*passes_.indirect,
           IndirectPass::Inputs{&slot.constants, &t.receivers, &slot.proxies, &tables_.visibility_table, &t.direct,
                                &tables_.exact_indirect, &t.vsgl_lights, rw, rh},

@@ -118,11 +118,15 @@ class SoftGiFrame {
     Buffer receivers, log_occlusion, direct, indirect, shaded, irradiance, hdr, ldr;
     Buffer tile_counts;  // uint per 8×8-receiver tile (tile_count()), the shadow pass's list lengths
     Buffer vsgl_partials, vsgl_lights;  // VsglLightsPass outputs (small: allocated for every method)
+    Image rsm_position, rsm_normal, rsm_flux, rsm_depth;  // RsmPass outputs (kRsmSize², every method)
   };
   struct Tables {
     Buffer log_table, visibility_table, optimal_linear, lighting_cube, exact_indirect;
     float log_table_rows = 0, visibility_rows = 0, optimal_linear_rows = 0, optimal_linear_max = 0, cube_size = 0;
     std::array<std::array<float, 9>, 3> irradiance_order3{};
+    std::array<std::array<float, 9>, 3> vsgl_sender_order3{};
+    bool vsgl_sun = false;  // render::FrameTables::vsgl_sun
+    glm::vec3 sun_direction{0.0f, 1.0f, 0.0f}, sun_irradiance{0.0f};
   };
 
  private:
@@ -141,6 +145,7 @@ class SoftGiFrame {
     Buffer ldr_readback;  // host-visible copies of the slot's finished frame
     Buffer hdr_readback;
     std::uint32_t proxy_count = 0;  // instances of the raster splat
+    bool rsm = false;               // the sun map is drawn (render.vsgl_sun on, senders' proxies bound it)
   };
 
   Context& context_;

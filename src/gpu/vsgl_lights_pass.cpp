@@ -41,48 +41,64 @@ std::vector<ResourceAccess> VsglLightsPass::accesses(const Inputs& in, const Out
   return list;
 }
 
-void VsglLightsPass::record(const Context& context, VkCommandBuffer commands, const Inputs& in,
-                            const Outputs& out) const {
-  pipeline_.bind(commands);
-  std::uint32_t partial = 0, light_count = 0;
-  const std::uint32_t per_sender = std::max(in.lights_per_sender, 1u);
-  for (const DrawItem& draw : in.draws) {
+std::vector<VsglLightRange> vsgl_light_ranges(std::span<const DrawItem> draws, std::uint32_t lights_per_sender) {
+  std::vector<VsglLightRange> ranges;
+  const std::uint32_t per_sender = std::max(lights_per_sender, 1u);
+  for (std::size_t d = 0; d < draws.size(); ++d) {
+    const DrawItem& draw = draws[d];
     if (draw.vsgl_light < 0) continue;
     const bool grouped = !draw.vsgl_group_first.empty();
     PROXYGI_CHECK(!grouped || (draw.vsgl_indices && draw.vsgl_group_first.size() == per_sender + 1),
                   "bone groups: one start per light and the end");
-    const Buffer& indices = grouped ? *draw.vsgl_indices : *draw.indices;
     const std::uint32_t total = draw.index_count / 3;
     for (std::uint32_t range = 0; range < per_sender; ++range) {
-      const std::uint32_t light = std::uint32_t(draw.vsgl_light) * per_sender + range;
-      const std::uint32_t first = grouped ? draw.vsgl_group_first[range]
-                                          : std::uint32_t(std::uint64_t(range) * total / per_sender);
-      const std::uint32_t last = grouped ? draw.vsgl_group_first[range + 1]
-                                         : std::uint32_t(std::uint64_t(range + 1) * total / per_sender);
-      const std::uint32_t triangles = last - first;
-      const std::uint32_t groups = group_count(triangles, kVsglGroupSize * kVsglTrianglesPerInvocation);
-      if (light >= kVsglMaxLights) continue;  // documented capacity
-      light_count = std::max(light_count, light + 1);
-      if (groups == 0 || partial + groups > kVsglMaxPartials) continue;  // fitted as zero
-      DescriptorPush()
-          .uniform_buffer(kVsglBindFrame, *in.constants)
-          .storage_buffer(kVsglBindPositions, *draw.positions)
-          .storage_buffer(kVsglBindNormals, *draw.normals)
-          .storage_buffer(kVsglBindIndices, indices)
-          .storage_buffer(kVsglBindPartials, *out.partials)
-          .storage_buffer(kVsglBindLights, *out.lights)
-          .push(context, commands, pipeline_);
-      VsglLightsPush push{};
-      push.base_color = draw.base_color;
-      push.stage = kVsglStageSums;
-      push.triangle_count = triangles;
-      push.partial_offset = partial;
-      push.light = light;
-      push.first_triangle = first;
-      pipeline_.push_constants(commands, &push, sizeof(push));
-      vkCmdDispatch(commands, groups, 1, 1);
-      partial += groups;
+      VsglLightRange out;
+      out.draw = d;
+      out.indices = grouped ? draw.vsgl_indices : draw.indices;
+      out.light = std::uint32_t(draw.vsgl_light) * per_sender + range;
+      out.first = grouped ? draw.vsgl_group_first[range] : std::uint32_t(std::uint64_t(range) * total / per_sender);
+      out.last = grouped ? draw.vsgl_group_first[range + 1] : std::uint32_t(std::uint64_t(range + 1) * total / per_sender);
+      if (out.light >= kVsglMaxLights) continue;  // documented capacity
+      ranges.push_back(out);
     }
+  }
+  return ranges;
+}
+
+std::uint32_t vsgl_light_count(std::span<const DrawItem> draws, std::uint32_t lights_per_sender) {
+  std::uint32_t count = 0;
+  for (const VsglLightRange& range : vsgl_light_ranges(draws, lights_per_sender)) count = std::max(count, range.light + 1);
+  return count;
+}
+
+void VsglLightsPass::record(const Context& context, VkCommandBuffer commands, const Inputs& in,
+                            const Outputs& out) const {
+  pipeline_.bind(commands);
+  std::uint32_t partial = in.first_partial, light_count = 0;
+  for (const VsglLightRange& range : vsgl_light_ranges(in.draws, in.lights_per_sender)) {
+    const DrawItem& draw = in.draws[range.draw];
+    const std::uint32_t triangles = range.last - range.first;
+    const std::uint32_t groups = group_count(triangles, kVsglGroupSize * kVsglTrianglesPerInvocation);
+    light_count = std::max(light_count, range.light + 1);
+    if (groups == 0 || partial + groups > kVsglMaxPartials) continue;  // fitted as zero
+    DescriptorPush()
+        .uniform_buffer(kVsglBindFrame, *in.constants)
+        .storage_buffer(kVsglBindPositions, *draw.positions)
+        .storage_buffer(kVsglBindNormals, *draw.normals)
+        .storage_buffer(kVsglBindIndices, *range.indices)
+        .storage_buffer(kVsglBindPartials, *out.partials)
+        .storage_buffer(kVsglBindLights, *out.lights)
+        .push(context, commands, pipeline_);
+    VsglLightsPush push{};
+    push.base_color = draw.base_color;
+    push.stage = kVsglStageSums;
+    push.triangle_count = triangles;
+    push.partial_offset = partial;
+    push.light = range.light;
+    push.first_triangle = range.first;
+    pipeline_.push_constants(commands, &push, sizeof(push));
+    vkCmdDispatch(commands, groups, 1, 1);
+    partial += groups;
   }
   PassBarriers fit;  // the sums, then the fit reading them
   const ResourceAccess summed[] = {writes(out.partials)};

@@ -19,6 +19,18 @@
 
 namespace proxygi::gpu {
 
+// The triangles [first, last) of `indices` (of draw `draw`) that light `light` summarises, for
+// every sender draw and each of its lights_per_sender ranges (the split Inputs describes), in
+// recording order; lights ≥ kVsglMaxLights are left out. Shared with the sun map (rsm_pass.h).
+struct VsglLightRange {
+  std::size_t draw = 0;
+  const Buffer* indices = nullptr;
+  std::uint32_t light = 0, first = 0, last = 0;
+};
+std::vector<VsglLightRange> vsgl_light_ranges(std::span<const DrawItem> draws, std::uint32_t lights_per_sender);
+// One more than the largest light index of the ranges' senders (capped at kVsglMaxLights).
+std::uint32_t vsgl_light_count(std::span<const DrawItem> draws, std::uint32_t lights_per_sender);
+
 class VsglLightsPass {
  public:
   struct Inputs {
@@ -29,6 +41,9 @@ class VsglLightsPass {
     // vsgl_group_first, K + 1 entries) triangles [first[k], first[k+1]) of its vsgl_indices.
     // Lights ≥ kVsglMaxLights are skipped; a light without triangles is fitted as zero.
     std::uint32_t lights_per_sender = 1;
+    // Partials [0, first_partial) already hold sums of these lights (the sun map's, render.vsgl_sun):
+    // the fit adds them; this pass writes its own after them.
+    std::uint32_t first_partial = 0;
   };
   struct Outputs {
     const Buffer* partials = nullptr;

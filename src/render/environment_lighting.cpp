@@ -20,6 +20,17 @@ sh::AnalyticSky to_sh_sky(const scene::Environment& environment) {
   return out;
 }
 
+SunInput scene_sun(const scene::Scene& scene, int order) {
+  SunInput sun;
+  if (scene.environment.type != scene::Environment::Type::sky) return sun;
+  const sh::AnalyticSky sky = to_sh_sky(scene.environment);
+  sun.present = true;
+  sun.lighting = sh::project_sun_disc(order, sky);
+  sun.direction = glm::vec3(sky.sun_direction);
+  sun.irradiance = scene::AnalyticSky(scene.environment).sun_irradiance();
+  return sun;
+}
+
 Result<EnvironmentLighting> make_environment_lighting(const scene::Scene& scene, int order, int panorama_width) {
   EnvironmentLighting out;
   const int width = std::max(panorama_width, 8), height = width / 2;

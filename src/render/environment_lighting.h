@@ -5,6 +5,7 @@
 // read with image::read_image, rotated about +Y by the scene's rotation, scaled by intensity.
 #include "base/result.h"
 #include "image/image.h"
+#include "render/frame_tables.h"
 #include "scene/scene.h"
 #include "sh/environment.h"
 
@@ -20,5 +21,9 @@ Result<EnvironmentLighting> make_environment_lighting(const scene::Scene& scene,
 
 // The scene's analytic sky in the SH library's terms (scene/environment.h gives the mapping).
 sh::AnalyticSky to_sh_sky(const scene::Environment& environment);
+
+// The scene's sun for the VSGL sun variant (render/frame_tables.h SunInput) at SH order `order`:
+// present for the analytic sky only.
+SunInput scene_sun(const scene::Scene& scene, int order);
 
 }  // namespace proxygi::render

@@ -7,6 +7,7 @@
 #include "sh/basis.h"
 #include "sh/convolution.h"
 #include "sh/ground_bounce.h"
+#include "sh/vsgl_sun.h"
 
 namespace proxygi::render {
 
@@ -15,7 +16,7 @@ int lighting_cube_set(const glm::vec3& p) {
 }
 
 FrameTables make_frame_tables(const sh::RgbSh& lighting, const settings::RenderSettings& settings,
-                              const GroundInput& ground, const TableResolution& resolution) {
+                              const GroundInput& ground, const TableResolution& resolution, const SunInput& sun) {
   const int order = settings.sh_order;
   PROXYGI_CHECK(order >= settings::kMinShOrder && order <= settings::kMaxShOrder, "frame SH order out of range");
   PROXYGI_CHECK(lighting.order >= order, "lighting projected at a lower order than the frame");
@@ -63,6 +64,30 @@ FrameTables make_frame_tables(const sh::RgbSh& lighting, const settings::RenderS
                                    tables.lighting.channels[std::size_t(channel)].begin() + 9);
     sh::convolve_zonal(3, cosine, irradiance);
     for (int i = 0; i < 9; ++i) tables.irradiance_order3[std::size_t(channel)][std::size_t(i)] = float(irradiance[std::size_t(i)]);
+  }
+
+  tables.vsgl_sender_order3 = tables.irradiance_order3;
+  const sh::SunLight sun_light{glm::dvec3(sun.direction), glm::dvec3(sun.irradiance)};
+  tables.vsgl_sun = settings.vsgl_sun == settings::VsglSun::automatic && sun.present && sun_light.above_horizon();
+  if (tables.vsgl_sun) {
+    PROXYGI_CHECK(sun.lighting.order >= 3, "the sun's SH share is needed at order 3 at least");
+    tables.sun_direction = sun.direction;
+    tables.sun_irradiance = sun.irradiance;
+    for (int channel = 0; channel < 3; ++channel) {
+      // L̃ of the windowed (lighting − L_sun): the window and the convolution are linear.
+      std::vector<double> rest(9);
+      for (int i = 0; i < 9; ++i)
+        rest[std::size_t(i)] = lighting.channels[std::size_t(channel)][std::size_t(i)] -
+                               sun.lighting.channels[std::size_t(channel)][std::size_t(i)];
+      if (settings.sh_window) {
+        std::vector<double> windowed(std::size_t(count), 0.0);
+        std::copy(rest.begin(), rest.end(), windowed.begin());
+        sh::apply_ringing_window(order, windowed);
+        rest.assign(windowed.begin(), windowed.begin() + 9);
+      }
+      sh::convolve_zonal(3, cosine, rest);
+      for (int i = 0; i < 9; ++i) tables.vsgl_sender_order3[std::size_t(channel)][std::size_t(i)] = float(rest[std::size_t(i)]);
+    }
   }
   return tables;
 }

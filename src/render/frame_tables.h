@@ -35,6 +35,16 @@ struct GroundInput {
   glm::vec3 albedo{0.0f};  // linear rgb
 };
 
+// The scene's sun for the VSGL sun variant (render.vsgl_sun; sh/vsgl_sun.h): its share of the
+// `lighting` given to make_frame_tables (sh::project_sun_disc: same order, unwindowed), its
+// direction and irradiance. Absent for environment maps (their sun, if any, is in the map).
+struct SunInput {
+  bool present = false;
+  sh::RgbSh lighting;                   // L_sun
+  glm::vec3 direction{0.0f, 1.0f, 0.0f};  // s: toward the sun, world, unit
+  glm::vec3 irradiance{0.0f};           // E_s onto a surface facing the sun, per channel
+};
+
 struct FrameTables {
   settings::RenderSettings settings;             // what the tables were built for (sh_order, η, sh_window)
   TableResolution resolution;
@@ -49,13 +59,22 @@ struct FrameTables {
   sh::RgbSh ground_lit;                  // L' (a copy of `lighting` when the bounce is off)
   glm::vec3 ground_radiance{0.0f};       // g = ρ E_g / π per channel (0 when the bounce is off)
   std::array<std::array<float, 9>, 3> irradiance_order3;  // L̃ per channel, order 3
+  // The VSGL sun variant: on when settings.vsgl_sun is auto and the sun is above the horizon
+  // (the frame uses it with indirect_method vsgl). The vertex VPLs are then lit by the L̃ of
+  // lighting − L_sun (windowed like lighting) and the sun's share comes from the sun map.
+  bool vsgl_sun = false;
+  glm::vec3 sun_direction{0.0f, 1.0f, 0.0f};  // s (vsgl_sun)
+  glm::vec3 sun_irradiance{0.0f};             // E_s (vsgl_sun)
+  std::array<std::array<float, 9>, 3> vsgl_sender_order3;  // = irradiance_order3 when !vsgl_sun
 };
 
 // `lighting` is the unwindowed SH projection of the environment (order ≥ settings.sh_order). Reads
 // the table settings of `settings` (sh_order, shadow_eta, indirect_eta, sh_window, ground_bounce).
 // `ground`: the scene's ground (no ground: the ground-lit cubes equal the others).
+// `sun`: the scene's sun (sh/vsgl_sun.h); without one, vsgl_sun is off.
 FrameTables make_frame_tables(const sh::RgbSh& lighting, const settings::RenderSettings& settings,
-                              const GroundInput& ground = {}, const TableResolution& resolution = {});
+                              const GroundInput& ground = {}, const TableResolution& resolution = {},
+                              const SunInput& sun = {});
 
 // The first LH cube of the set that lights a receiver at world point p: 0 on (or below) the
 // ground plane, gpu_layout::kGroundLitCubes above it (exponentiate.comp's rule).

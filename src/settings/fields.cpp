@@ -39,6 +39,7 @@ constexpr auto kMethodChoices = choices_of(kShadingMethodNames);
 constexpr auto kOperatorChoices = choices_of(kIndirectOperatorNames);
 constexpr auto kIndirectMethodChoices = choices_of(kIndirectMethodNames);
 constexpr auto kVsglGroupingChoices = choices_of(kVsglGroupingNames);
+constexpr auto kVsglSunChoices = choices_of(kVsglSunNames);
 constexpr auto kExponentialChoices = choices_of(kExponentialNames);
 constexpr auto kUpsamplingChoices = choices_of(kUpsamplingNames);
 constexpr auto kSplatChoices = choices_of(kSplatMethodNames);
@@ -119,6 +120,8 @@ const std::vector<Field>& table() {
                                kVsglLightsPerCharacter),
       choice<&S::vsgl_grouping>("vsgl_grouping", "vsgl: a character's lights by index range or by bone group",
                                 kNeedConstants, kVsglGroupingChoices),
+      choice<&S::vsgl_sun>("vsgl_sun", "vsgl: the sun's bounce from a reflective shadow map (auto: sun above the horizon) or off",
+                           kNeedPipelines | kNeedTables, kVsglSunChoices),
       boolean<&S::ground_bounce>("ground_bounce", "light bounced off the lit ground onto receivers above it", kNeedTables),
       choice<&S::tonemap>("tonemap", "display curve", kNeedConstants, kTonemapChoices),
       real<&S::exposure_ev>("exposure_ev", "exposure in stops before the tonemap", kNeedConstants, -kInfinity, -8.0, 8.0),
@@ -131,10 +134,10 @@ const std::vector<Field>& table() {
 [[maybe_unused]] void every_member_has_a_row(const RenderSettings& settings) {
   const auto& [method, sh_order, receiver_scale, shadow_eta, indirect_eta, sh_window, indirect_operator, exponential,
                hyb_tau, upsampling, bilateral_depth_epsilon, splat, indirect_method, vsgl_lights, vsgl_grouping,
-               ground_bounce, tonemap, exposure_ev] = settings;
+               vsgl_sun, ground_bounce, tonemap, exposure_ev] = settings;
   (void)method, (void)sh_order, (void)receiver_scale, (void)shadow_eta, (void)indirect_eta, (void)sh_window;
   (void)indirect_operator, (void)exponential, (void)hyb_tau, (void)upsampling, (void)bilateral_depth_epsilon;
-  (void)splat, (void)indirect_method, (void)vsgl_lights, (void)vsgl_grouping, (void)ground_bounce, (void)tonemap;
+  (void)splat, (void)indirect_method, (void)vsgl_lights, (void)vsgl_grouping, (void)vsgl_sun, (void)ground_bounce, (void)tonemap;
   (void)exposure_ev;
 }
 

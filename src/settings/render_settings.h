@@ -38,6 +38,12 @@ enum class IndirectMethod { proxy, vsgl, none };
 //   bone_groups    K groups of joints connected in the skeleton with similar vertex counts, each
 //                  triangle in the group of its vertices' dominant joints (anim/bone_groups.h)
 enum class VsglGrouping { vertex_ranges, bone_groups };
+// The sun variant of vsgl (render.vsgl_sun; sh/vsgl_sun.h):
+//   auto  when the scene's sun is above the horizon, a reflective shadow map of the characters
+//         from the sun sends the sun's bounce (shadowed on the senders) and the vertex VPLs are
+//         lit by the SH lighting without the sun
+//   off   the vertex VPLs alone, lit by the whole SH lighting (sun included, unshadowed)
+enum class VsglSun { automatic, off };
 // SH exponential: HYB (OL after halving until |f̂| ≤ τ, then squarings) or OL alone.
 enum class Exponential { hyb, ol };
 enum class Upsampling { bilateral, bilinear };
@@ -71,6 +77,7 @@ struct RenderSettings {
   IndirectMethod indirect_method = IndirectMethod::proxy;
   int vsgl_lights = 1;          // VSGL lights per character, one of kVsglLightsPerCharacter
   VsglGrouping vsgl_grouping = VsglGrouping::vertex_ranges;  // how those lights split its triangles
+  VsglSun vsgl_sun = VsglSun::automatic;  // the sun's share from a reflective shadow map
   // Receivers above the ground plane see the lit ground (albedo × its unshadowed irradiance / π)
   // below their horizon instead of the environment's below-horizon radiance (sh/ground_bounce.h).
   bool ground_bounce = true;
@@ -94,6 +101,7 @@ inline constexpr Name<IndirectMethod> kIndirectMethodNames[] = {
     {"proxy", IndirectMethod::proxy}, {"vsgl", IndirectMethod::vsgl}, {"none", IndirectMethod::none}};
 inline constexpr Name<VsglGrouping> kVsglGroupingNames[] = {{"vertex_ranges", VsglGrouping::vertex_ranges},
                                                             {"bone_groups", VsglGrouping::bone_groups}};
+inline constexpr Name<VsglSun> kVsglSunNames[] = {{"auto", VsglSun::automatic}, {"off", VsglSun::off}};
 inline constexpr Name<Exponential> kExponentialNames[] = {{"hyb", Exponential::hyb}, {"ol", Exponential::ol}};
 inline constexpr Name<Upsampling> kUpsamplingNames[] = {{"bilateral", Upsampling::bilateral},
                                                         {"bilinear", Upsampling::bilinear}};
@@ -112,6 +120,7 @@ std::string_view name_of(ShadingMethod value);
 std::string_view name_of(IndirectOperator value);
 std::string_view name_of(IndirectMethod value);
 std::string_view name_of(VsglGrouping value);
+std::string_view name_of(VsglSun value);
 std::string_view name_of(Exponential value);
 std::string_view name_of(Upsampling value);
 std::string_view name_of(SplatMethod value);

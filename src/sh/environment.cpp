@@ -42,11 +42,26 @@ Result<RgbSh> project_equirect_file(int order, const std::filesystem::path& path
   return project_equirect(order, *image);
 }
 
-glm::dvec3 AnalyticSky::radiance(const glm::dvec3& dir) const {
-  if (glm::dot(dir, sun_direction) >= std::cos(sun_radius_radians)) return sun_radiance;
+glm::dvec3 AnalyticSky::radiance_without_sun(const glm::dvec3& dir) const {
   if (dir.y < 0.0) return ground;
   const double t = std::sqrt(dir.y);  // quick rise away from the horizon
   return horizon + (zenith - horizon) * t;
+}
+
+glm::dvec3 AnalyticSky::radiance(const glm::dvec3& dir) const {
+  const bool in_sun = glm::dot(dir, sun_direction) >= std::cos(sun_radius_radians);
+  return radiance_without_sun(dir) + (in_sun ? sun_radiance : glm::dvec3(0.0));
+}
+
+RgbSh project_sun_disc(int order, const AnalyticSky& sky) {
+  PROXYGI_CHECK(order >= kMinOrder && order <= kMaxOrder, "SH order must be 1..8");
+  const std::size_t count = std::size_t(order * order);
+  RgbSh result{order, {std::vector<double>(count, 0.0), std::vector<double>(count, 0.0), std::vector<double>(count, 0.0)}};
+  std::vector<double> disc(count);
+  rotate_zonal(order, proxy_visibility_zonal(order, std::sin(sky.sun_radius_radians)), sky.sun_direction, disc);
+  for (int c = 0; c < 3; ++c)
+    for (std::size_t i = 0; i < count; ++i) result.channels[std::size_t(c)][i] = sky.sun_radiance[c] * disc[i];
+  return result;
 }
 
 RgbSh project_sky(int order, const AnalyticSky& sky) {
@@ -62,20 +77,16 @@ RgbSh project_sky(int order, const AnalyticSky& sky) {
       // The cap rule is about +z; map z -> +Y (upper) or -Y (lower).
       const glm::dvec3 d = upper.directions[q];
       const glm::dvec3 dir = half == 0 ? glm::dvec3(d.x, d.z, -d.y) : glm::dvec3(d.x, -d.z, d.y);
-      const glm::dvec3 value = dir.y < 0.0 ? sky.ground : sky.horizon + (sky.zenith - sky.horizon) * std::sqrt(std::max(dir.y, 0.0));
+      const glm::dvec3 value = sky.radiance_without_sun(dir);
       evaluate_basis(order, dir, basis);
       for (int c = 0; c < 3; ++c)
         for (std::size_t i = 0; i < count; ++i) result.channels[std::size_t(c)][i] += upper.weights[q] * value[c] * basis[i];
     }
   }
-  // The sun disc replaces the sky under it: add (sun - sky under the sun) times the disc. The
-  // sky under a small disc is taken as its value at the disc centre.
-  std::vector<double> disc(count);
-  rotate_zonal(order, proxy_visibility_zonal(order, std::sin(sky.sun_radius_radians)), sky.sun_direction, disc);
-  const glm::dvec3 sky_under_sun = sky.sun_direction.y < 0.0 ? sky.ground
-      : sky.horizon + (sky.zenith - sky.horizon) * std::sqrt(sky.sun_direction.y);
+  // The sun disc adds to the sky under it (scene/environment.h), in closed form.
+  const RgbSh sun = project_sun_disc(order, sky);
   for (int c = 0; c < 3; ++c)
-    for (std::size_t i = 0; i < count; ++i) result.channels[std::size_t(c)][i] += (sky.sun_radiance[c] - sky_under_sun[c]) * disc[i];
+    for (std::size_t i = 0; i < count; ++i) result.channels[std::size_t(c)][i] += sun.channels[std::size_t(c)][i];
   return result;
 }
 

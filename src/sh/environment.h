@@ -33,8 +33,9 @@ RgbSh project_equirect(int order, const image::ImageF& image);
 Result<RgbSh> project_equirect_file(int order, const std::filesystem::path& path);
 
 // Analytic sky: a vertical gradient from horizon to zenith colour above the horizon (+Y up),
-// a uniform ground colour below, and a sun disc of angular radius sun_radius_radians and
-// constant radiance sun_radiance around sun_direction (unit). Radiances are linear RGB.
+// a uniform ground colour below, and a sun disc of angular radius sun_radius_radians around
+// sun_direction (unit) adding the constant radiance sun_radiance on top of the sky under it (as
+// scene/environment.h and the path tracer do). Radiances are linear RGB.
 struct AnalyticSky {
   glm::dvec3 zenith{0.25, 0.45, 0.9};
   glm::dvec3 horizon{0.8, 0.85, 0.95};
@@ -44,10 +45,14 @@ struct AnalyticSky {
   glm::dvec3 sun_radiance{60.0, 55.0, 45.0};
   // Radiance in direction dir (unit), sun included.
   glm::dvec3 radiance(const glm::dvec3& dir) const;
+  // The gradient and ground alone.
+  glm::dvec3 radiance_without_sun(const glm::dvec3& dir) const;
 };
 // Sky by quadrature (split at the horizon, so exact up to the smooth gradient) plus the sun disc
-// in closed form (a rotated cap).
+// in closed form (a rotated cap): project_sky = projection of the gradient + project_sun_disc.
 RgbSh project_sky(int order, const AnalyticSky& sky);
+// The sun disc's share of project_sky alone: sun_radiance × the SH of the cap's indicator.
+RgbSh project_sun_disc(int order, const AnalyticSky& sky);
 
 // LH(N) = SH projection (order n) of L(s) max(N . s, 0) for the lighting L given by its order-n
 // SH vector: the shadowed irradiance at a receiver is E = O_p . LH(N) (not divided by pi).

@@ -12,7 +12,9 @@
 #include "gpu/transfer.h"
 #include "gpu_test_context.h"
 #include "sh/basis.h"
+#include "sh/environment.h"
 #include "sh/vsgl.h"
+#include "sh/vsgl_sun.h"
 #include "shaders/shared/layouts.h"
 
 namespace proxygi::gpu {
@@ -56,12 +58,12 @@ sh::RgbSh sky() {
   return lighting;
 }
 
-// The CPU twin of vsgl_lights.comp: the same VPLs from the same triangles (triangles
-// [first, last) of `indices`), summed relative to the first centroid, and fitted.
-std::optional<sh::Vsgl> cpu_light(const Mesh& mesh, std::span<const std::uint32_t> indices,
-                                  const render::FrameTables& tables, std::size_t first, std::size_t last) {
-  sh::VsglSums sums;
-  glm::dvec3 origin(0.0);
+using Order3 = std::array<std::array<float, 9>, 3>;
+
+// The CPU twin of vsgl_lights.comp's sums: the same VPLs from the same triangles (triangles
+// [first, last) of `indices`) lit by `irradiance` (L̃), added to `sums` relative to `origin`.
+void add_cpu_sums(sh::VsglSums& sums, const glm::dvec3& origin, const Mesh& mesh, std::span<const std::uint32_t> indices,
+                  const Order3& irradiance_order3, std::size_t first, std::size_t last) {
   for (std::size_t t = 3 * first; t < 3 * last; t += 3) {
     const glm::dvec3 p0(mesh.positions[indices[t]]), p1(mesh.positions[indices[t + 1]]),
         p2(mesh.positions[indices[t + 2]]);
@@ -70,17 +72,24 @@ std::optional<sh::Vsgl> cpu_light(const Mesh& mesh, std::span<const std::uint32_
     sh::VirtualPointLight vpl;
     vpl.position = (p0 + p1 + p2) / 3.0;
     vpl.normal = glm::normalize(summed);
-    if (t == 3 * first) origin = vpl.position;
     const double area = 0.5 * glm::length(glm::cross(p1 - p0, p2 - p0));
     double basis[9];
     sh::evaluate_basis<3>(vpl.normal, basis);
     for (int c = 0; c < 3; ++c) {
       double irradiance = 0.0;
-      for (int i = 0; i < 9; ++i) irradiance += basis[i] * tables.irradiance_order3[std::size_t(c)][std::size_t(i)];
+      for (int i = 0; i < 9; ++i) irradiance += basis[i] * irradiance_order3[std::size_t(c)][std::size_t(i)];
       vpl.flux[c] = double(mesh.albedo[c]) * std::max(irradiance, 0.0) * area;
     }
     sh::add_light(sums, vpl, origin);
   }
+}
+
+// vsgl_lights.comp's light of those triangles, lit by the whole L̃.
+std::optional<sh::Vsgl> cpu_light(const Mesh& mesh, std::span<const std::uint32_t> indices,
+                                  const render::FrameTables& tables, std::size_t first, std::size_t last) {
+  sh::VsglSums sums;
+  const glm::dvec3 origin(mesh.positions[indices[3 * first]]);
+  add_cpu_sums(sums, origin, mesh, indices, tables.irradiance_order3, first, last);
   return sh::fit_vsgl(sums, origin);
 }
 
@@ -196,6 +205,161 @@ INSTANTIATE_TEST_SUITE_P(PerSender, VsglPassLights,
                          ::testing::Combine(::testing::Values(1, 4),
                                             ::testing::Values(settings::VsglGrouping::vertex_ranges,
                                                               settings::VsglGrouping::bone_groups)));
+
+// The CPU twin of rsm.vert/.frag: each texel's centre ray (sh::RsmView) against every sender
+// triangle, the hit nearest the sun kept, position and normal interpolated linearly (the map is
+// orthographic). light[i]: the light of sender i.
+struct CpuTexel {
+  sh::RsmTexel texel;
+  int light = -1;
+};
+std::vector<CpuTexel> cpu_sun_map(const sh::RsmView& view, std::span<const Mesh> senders) {
+  std::vector<CpuTexel> map;
+  for (int y = 0; y < view.size; ++y)
+    for (int x = 0; x < view.size; ++x) {
+      const double u = view.u_min + (x + 0.5) * view.u_extent / view.size;
+      const double v = view.v_min + (y + 0.5) * view.v_extent / view.size;
+      const glm::dvec3 origin = u * view.right + v * view.up + view.s_max * view.toward_sun, along = -view.toward_sun;
+      double nearest = 1e300;
+      CpuTexel best;
+      for (std::size_t m = 0; m < senders.size(); ++m) {
+        const Mesh& mesh = senders[m];
+        for (std::size_t t = 0; t < mesh.indices.size(); t += 3) {  // Möller–Trumbore
+          const glm::dvec3 p0(mesh.positions[mesh.indices[t]]), p1(mesh.positions[mesh.indices[t + 1]]),
+              p2(mesh.positions[mesh.indices[t + 2]]);
+          const glm::dvec3 e1 = p1 - p0, e2 = p2 - p0, q = glm::cross(along, e2);
+          const double det = glm::dot(e1, q);
+          if (std::abs(det) < 1e-14) continue;
+          const glm::dvec3 r = origin - p0;
+          const double b1 = glm::dot(r, q) / det;
+          const glm::dvec3 w = glm::cross(r, e1);
+          const double b2 = glm::dot(along, w) / det, distance = glm::dot(e2, w) / det;
+          if (b1 < 0.0 || b2 < 0.0 || b1 + b2 > 1.0 || distance >= nearest) continue;
+          nearest = distance;
+          const double b0 = 1.0 - b1 - b2;
+          best.texel.position = b0 * p0 + b1 * p1 + b2 * p2;
+          best.texel.normal = glm::normalize(b0 * glm::dvec3(mesh.normals[mesh.indices[t]]) +
+                                             b1 * glm::dvec3(mesh.normals[mesh.indices[t + 1]]) +
+                                             b2 * glm::dvec3(mesh.normals[mesh.indices[t + 2]]));
+          best.texel.albedo = glm::dvec3(glm::vec3(mesh.albedo));
+          best.light = int(m);
+        }
+      }
+      if (best.light >= 0) map.push_back(best);
+    }
+  return map;
+}
+
+TEST_F(VsglPassTest, SunMapLightsAndIrradianceMatchTheCpuTwin) {
+  // render.vsgl_sun auto with a sun above the horizon: the senders' vertex VPLs lit by L̃ without
+  // the sun, plus the sun map's texels (the small sphere shadows part of the big one), per light.
+  FrameConfig config;
+  config.width = config.height = 64;
+  config.frames_in_flight = 1;
+  config.render.receiver_scale = 2;
+  config.render.indirect_method = settings::IndirectMethod::vsgl;
+  sh::AnalyticSky sun_sky;
+  sun_sky.sun_direction = glm::normalize(glm::dvec3(0.6, 0.7, 0.3));
+  sun_sky.sun_radius_radians = 0.05;
+  sun_sky.sun_radiance = glm::dvec3(3000.0, 2800.0, 2400.0);  // E_s ≈ 23: a sunny day against sky()
+  render::SunInput sun;
+  sun.present = true;
+  sun.lighting = sh::project_sun_disc(4, sun_sky);
+  sun.direction = glm::vec3(sun_sky.sun_direction);
+  sun.irradiance = glm::vec3(sun_sky.sun_radiance * (std::numbers::pi * std::pow(std::sin(sun_sky.sun_radius_radians), 2)));
+  sh::RgbSh lighting = sky();
+  for (int c = 0; c < 3; ++c)
+    for (std::size_t i = 0; i < 16; ++i) lighting.channels[std::size_t(c)][i] += sun.lighting.channels[std::size_t(c)][i];
+  const render::FrameTables tables = render::make_frame_tables(lighting, config.render, {}, {}, sun);
+  ASSERT_TRUE(tables.vsgl_sun);
+  const testing::GroundMesh ground = testing::ground_plane(20.0f, 4);
+  const Mesh senders[] = {uv_sphere({0.0f, 0.6f, 0.0f}, 0.5f, 20, 24, {0.9f, 0.2f, 0.1f, 1.0f}),
+                          uv_sphere({0.7f, 1.1f, 0.4f}, 0.25f, 12, 16, {0.1f, 0.3f, 0.9f, 1.0f})};
+  std::vector<StaticMesh> meshes;
+  auto ground_mesh = upload_static_mesh(context(), ground.positions, ground.normals, ground.indices, glm::vec4(0.8f));
+  ASSERT_TRUE(ground_mesh.ok());
+  meshes.push_back(std::move(*ground_mesh));
+  for (const Mesh& sender : senders) {
+    auto uploaded = upload_static_mesh(context(), sender.positions, sender.normals, sender.indices, sender.albedo);
+    ASSERT_TRUE(uploaded.ok());
+    meshes.push_back(std::move(*uploaded));
+  }
+  std::vector<DrawItem> draws;
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    draws.push_back(meshes[i].draw());
+    draws.back().vsgl_light = int(i) - 1;
+  }
+  // The proxies the map is fitted to: one sphere per sender.
+  const std::vector<render::Sphere> spheres = {{{0.0f, 0.6f, 0.0f}, 0.5f, glm::vec3(0.5f)},
+                                               {{0.7f, 1.1f, 0.4f}, 0.25f, glm::vec3(0.5f)}};
+  auto frame = SoftGiFrame::create(context(), config, tables, image::ImageF(8, 4, glm::vec4(1.0f)));
+  ASSERT_TRUE(frame.ok()) << frame.message();
+  ASSERT_TRUE((*frame)->write_slot(0, testing::look_at({0.5f, 3.0f, 4.0f}, {0.3f, 0.3f, 0.0f}, 60.0f, 1.0f), spheres).ok());
+  ASSERT_TRUE(context()
+                  .submit_and_wait([&](VkCommandBuffer commands) {
+                    (*frame)->record(commands, 0, draws, FrameOutput::readback());
+                  })
+                  .ok());
+  auto lights = (*frame)->read_vsgl_lights();
+  ASSERT_TRUE(lights.ok());
+  ASSERT_EQ(lights->size(), 2u);
+
+  glm::dvec3 low(1e300), high(-1e300);
+  for (const render::Sphere& sphere : spheres) {
+    low = glm::min(low, glm::dvec3(sphere.center) - double(sphere.radius));
+    high = glm::max(high, glm::dvec3(sphere.center) + double(sphere.radius));
+  }
+  const sh::RsmView view =
+      sh::fit_rsm_view(sun_sky.sun_direction, low, high, int(gpu_layout::kRsmSize), sh::rsm_margin(low, high));
+  const std::vector<CpuTexel> map = cpu_sun_map(view, senders);
+  const sh::SunLight sun_light{sun_sky.sun_direction, glm::dvec3(sun.irradiance)};
+  std::vector<sh::Vsgl> cpu;
+  double sun_fraction[2] = {0.0, 0.0};
+  for (std::size_t k = 0; k < 2; ++k) {
+    const Mesh& mesh = senders[k];
+    const glm::dvec3 origin(mesh.positions[0]);
+    sh::VsglSums sums;
+    add_cpu_sums(sums, origin, mesh, mesh.indices, tables.vsgl_sender_order3, 0, mesh.indices.size() / 3);
+    const double vertex_weight = sums.weight;
+    std::vector<sh::RsmTexel> texels;
+    for (const CpuTexel& texel : map)
+      if (texel.light == int(k)) texels.push_back(texel.texel);
+    sh::add_vsgl_sun(sums, texels, sun_light, view.texel_area(), origin);
+    sun_fraction[k] = 1.0 - vertex_weight / sums.weight;
+    const auto expected = sh::fit_vsgl(sums, origin);
+    ASSERT_TRUE(expected);
+    cpu.push_back(*expected);
+    const gpu_layout::VsglLight& gpu = (*lights)[k];
+    SCOPED_TRACE("light " + std::to_string(k));
+    EXPECT_LE(glm::length(glm::dvec3(gpu.axis_sharpness) - expected->axis), 1e-3);
+    EXPECT_NEAR(gpu.axis_sharpness.w, expected->sharpness, 1e-3 * expected->sharpness + 1e-6);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(gpu.amplitude[c], expected->amplitude[c], 1e-3 * expected->amplitude[c]);
+    EXPECT_LE(glm::length(glm::dvec3(gpu.mean_variance) - expected->mean), 1e-3);
+    EXPECT_NEAR(gpu.mean_variance.w, expected->variance, 2e-3 * expected->variance);
+  }
+  // The sun is most of each light's power: the map is what the lights show.
+  EXPECT_GT(sun_fraction[0], 0.5);
+  EXPECT_GT(sun_fraction[1], 0.5);
+
+  auto positions = (*frame)->read_receiver_positions();
+  auto normals = (*frame)->read_receiver_normals();
+  auto indirect = (*frame)->read_indirect();
+  ASSERT_TRUE(positions.ok() && normals.ok() && indirect.ok());
+  int checked = 0;
+  for (int y = 0; y < positions->height; y += 2)
+    for (int x = 0; x < positions->width; x += 2) {
+      const glm::vec4 p = positions->at(x, y);
+      if (p.w <= 0.0f) continue;
+      const glm::dvec3 n(glm::vec3(normals->at(x, y)));
+      glm::dvec3 expected(0.0);
+      for (const sh::Vsgl& light : cpu) expected += sh::vsgl_irradiance(light, glm::dvec3(glm::vec3(p)), n);
+      const glm::vec3 gpu(indirect->at(x, y));
+      const float error = glm::length(gpu - glm::vec3(expected)) / std::max(float(glm::length(expected)), 1e-3f);
+      EXPECT_LE(error, 2e-3f) << "at " << x << "," << y;
+      ++checked;
+    }
+  EXPECT_GE(checked, 200);
+}
 
 }  // namespace
 }  // namespace proxygi::gpu

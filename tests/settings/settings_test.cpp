@@ -35,7 +35,7 @@ TEST(SettingsFields, OneRowPerMemberEachWritingOnlyItsMember) {
     }
     EXPECT_EQ(classify_change(defaults, changed), field.needs) << field.key;
   }
-  EXPECT_EQ(fields().size(), 18u);  // the members named in fields.cpp's structured binding
+  EXPECT_EQ(fields().size(), 19u);  // the members named in fields.cpp's structured binding
 }
 
 TEST(SettingsFields, LimitsAndMessages) {
@@ -70,6 +70,9 @@ TEST(SettingsFields, NamesRoundTrip) {
   EXPECT_EQ(name_of(ShadingMethod::ambient_occlusion), "ao");
   EXPECT_EQ(name_of(SplatMethod::compute), "compute");
   EXPECT_FALSE(choice_value(*find_field("tonemap"), "filmic"));
+  EXPECT_EQ(name_of(VsglSun::automatic), "auto");
+  EXPECT_EQ(*choice_value(*find_field("vsgl_sun"), "off"), int(VsglSun::off));
+  EXPECT_FALSE(choice_value(*find_field("vsgl_sun"), "on"));
 }
 
 TEST(SettingsChanges, ClassifiedByWhatTheyNeed) {

@@ -86,6 +86,29 @@ TEST(ShEnvironment, SkyProjectionMatchesBruteForceQuadrature) {
   for (int i = 0; i < 16; ++i) EXPECT_NEAR(sh.channels[0][std::size_t(i)], brute[std::size_t(i)], 0.02 * std::abs(brute[0])) << i;
 }
 
+TEST(ShEnvironment, SunDiscAddsToTheSkyUnderIt) {
+  // scene/environment.h and the path tracer add the disc on top of the gradient; the projection
+  // must too: with the sun minus without it is sun_radiance × the disc, whatever the sky under it.
+  AnalyticSky sky;
+  sky.sun_radius_radians = 0.3;
+  sky.sun_radiance = glm::dvec3(2.0, 1.5, 1.0);  // comparable to the sky, so a replaced sky shows
+  AnalyticSky dark = sky;
+  dark.sun_radiance = glm::dvec3(0.0);
+  const RgbSh with_sun = project_sky(4, sky), without_sun = project_sky(4, dark);
+  const std::vector<double> disc = project_function(4, make_sphere_quadrature(800, 1600), [&](const glm::dvec3& d) {
+    return glm::dot(d, sky.sun_direction) >= std::cos(sky.sun_radius_radians) ? 1.0 : 0.0;
+  });
+  const RgbSh sun = project_sun_disc(4, sky);
+  for (int c = 0; c < 3; ++c)
+    for (int i = 0; i < 16; ++i) {
+      const std::size_t k = std::size_t(i);
+      EXPECT_NEAR(with_sun.channels[std::size_t(c)][k] - without_sun.channels[std::size_t(c)][k],
+                  sky.sun_radiance[c] * disc[k], 2e-3 * sky.sun_radiance[c]) << c << " " << i;
+      EXPECT_NEAR(sun.channels[std::size_t(c)][k], with_sun.channels[std::size_t(c)][k] - without_sun.channels[std::size_t(c)][k], 1e-12);
+    }
+  EXPECT_EQ(sky.radiance(sky.sun_direction), sky.radiance_without_sun(sky.sun_direction) + sky.sun_radiance);
+}
+
 TEST(ShEnvironment, LightingTimesClampedCosineMatchesHighOrderProjection) {
   // L band-limited (order 3); LH(N) is the order-3 projection of L(s) max(N.s, 0). Reference:
   // integrate over the hemisphere about N = +z with a cap rule (exact for the polynomial).
