@@ -166,5 +166,24 @@ TEST(StabilityContinuity, InfluenceFadeStepStaysUnderOneDisplayStepAtTheDefaultE
   EXPECT_EQ(checked, 2u);  // sky and delta light
 }
 
+// F10's cut at the default η misses shadow under a delta light (S6); η from the lighting does not.
+TEST(StabilityContinuity, EtaFromTheLightingKeepsTheMissingShadowUnderOneDisplayStep) {
+  StabilityOptions options;
+  options.quick = true;
+  const SweepResult sweep = sweep_influence_fade(options);
+  double fixed_delta = -1.0;
+  std::size_t automatic = 0;
+  for (const SweepPoint& p : sweep.points) {
+    if (p.metric != 1) continue;
+    if (p.series == "delta light" && p.x == double(settings::RenderSettings{}.shadow_eta)) fixed_delta = p.value;
+    if (p.series.ends_with("auto eta")) {
+      ++automatic;
+      EXPECT_LE(p.value, 1.0) << p.series << " at eta " << p.x;
+    }
+  }
+  EXPECT_GT(fixed_delta, 1.0);  // the failure auto η removes
+  EXPECT_EQ(automatic, 2u);     // sky and delta light
+}
+
 }  // namespace
 }  // namespace proxygi::study
