@@ -173,6 +173,7 @@ Status SoftGiFrame::upload_tables(const render::FrameTables& tables) {
   uploaded.optimal_linear_rows = float(tables.optimal_linear.rows());
   uploaded.optimal_linear_max = tables.optimal_linear.max_norm;
   uploaded.cube_size = float(tables.lighting_cube[0].face_size);
+  uploaded.shadow_eta = tables.shadow_eta;
   uploaded.irradiance_order3 = tables.irradiance_order3;
   uploaded.vsgl_sender_order3 = tables.vsgl_sender_order3;
   uploaded.vsgl_sun = tables.vsgl_sun;

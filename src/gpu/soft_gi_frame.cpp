@@ -116,7 +116,7 @@ Status SoftGiFrame::write_slot(std::uint32_t slot, const FrameView& view, std::s
   constants.receiver_scale = std::uint32_t(render.receiver_scale);
   constants.sh_order = std::uint32_t(render.sh_order);
   constants.composite_mode = composite_mode(config_);
-  constants.shadow_eta = render.shadow_eta;
+  constants.shadow_eta = tables_.shadow_eta;
   constants.indirect_eta = render.indirect_eta;
   constants.hybrid_tau = render.exponential == settings::Exponential::ol ? std::numeric_limits<float>::max() : render.hyb_tau;
   constants.log_table_rows = tables_.log_table_rows;

@@ -80,6 +80,7 @@ class SoftGiFrame {
                    PassBarriers& barriers) const;
 
   const FrameConfig& config() const { return config_; }
+  float shadow_eta() const { return tables_.shadow_eta; }  // in use (resolved when the setting is auto)
   const settings::RenderSettings& settings() const { return config_.render; }
   std::uint32_t slot_count() const { return static_cast<std::uint32_t>(slots_.size()); }
 
@@ -123,6 +124,7 @@ class SoftGiFrame {
   struct Tables {
     Buffer log_table, visibility_table, optimal_linear, lighting_cube, exact_indirect;
     float log_table_rows = 0, visibility_rows = 0, optimal_linear_rows = 0, optimal_linear_max = 0, cube_size = 0;
+    float shadow_eta = 0;  // render::FrameTables::shadow_eta (resolved when the setting is auto)
     std::array<std::array<float, 9>, 3> irradiance_order3{};
     std::array<std::array<float, 9>, 3> vsgl_sender_order3{};
     bool vsgl_sun = false;  // render::FrameTables::vsgl_sun

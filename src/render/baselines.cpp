@@ -43,7 +43,7 @@ glm::vec3 unshadowed_irradiance(const FrameTables& tables, const glm::vec3& p, c
 
 AmbientOcclusionResult ambient_occlusion(const FrameTables& tables, const glm::vec3& p, const glm::vec3& normal,
                                          std::span<const Sphere> spheres) {
-  const float eta = tables.settings.shadow_eta;
+  const float eta = tables.shadow_eta;
   const float minimum_sine = 1.0f / eta;
   AmbientOcclusionResult result;
   for (const Sphere& sphere : spheres) {

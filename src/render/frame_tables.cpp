@@ -3,10 +3,12 @@
 #include <algorithm>
 
 #include "base/check.h"
+#include "image/image.h"
 #include "shaders/shared/layouts.h"
 #include "sh/basis.h"
 #include "sh/convolution.h"
 #include "sh/ground_bounce.h"
+#include "sh/influence_eta.h"
 #include "sh/vsgl_sun.h"
 
 namespace proxygi::render {
@@ -32,8 +34,16 @@ FrameTables make_frame_tables(const sh::RgbSh& lighting, const settings::RenderS
     if (settings.sh_window) sh::apply_ringing_window(order, coefficients);
   }
 
+  tables.shadow_eta = settings.shadow_eta;
+  if (settings.shadow_eta == settings::kEtaFromLighting) {
+    std::vector<double> luminance(std::size_t(count), 0.0);
+    for (std::size_t i = 0; i < luminance.size(); ++i)
+      luminance[i] = image::rec709_luminance(
+          glm::dvec3(tables.lighting.channels[0][i], tables.lighting.channels[1][i], tables.lighting.channels[2][i]));
+    tables.shadow_eta = sh::eta_for_cutoff(sh::lighting_concentration(order, luminance), settings::kEtaCutoffError);
+  }
   tables.log_occlusion = sh::make_log_occlusion_table(order, resolution.table_rows);
-  sh::apply_influence_fade(tables.log_occlusion, settings.shadow_eta);
+  sh::apply_influence_fade(tables.log_occlusion, tables.shadow_eta);
   tables.proxy_visibility = sh::make_proxy_visibility_table(3, resolution.table_rows);
   sh::apply_influence_fade(tables.proxy_visibility, settings.indirect_eta);
   tables.exact_indirect = sh::make_exact_indirect_table(3, resolution.table_rows);

@@ -47,9 +47,12 @@ struct SunInput {
 
 struct FrameTables {
   settings::RenderSettings settings;             // what the tables were built for (sh_order, η, sh_window)
+  // η of shadows in use: settings.shadow_eta, or from `lighting` when that is kEtaFromLighting
+  // (√(c_L/ε) of its luminance, sh/influence_eta.h). Everything that cuts shadows reads this.
+  float shadow_eta = 0.0f;
   TableResolution resolution;
   sh::RgbSh lighting;                          // windowed when settings.sh_window, order = settings.sh_order
-  sh::ZonalTable log_occlusion;                // order settings.sh_order, faded at 1/η_shadow
+  sh::ZonalTable log_occlusion;                // order settings.sh_order, faded at 1/shadow_eta
   sh::ZonalTable proxy_visibility;             // order 3, faded at 1/η_indirect
   sh::OptimalLinearTable optimal_linear;       // order settings.sh_order
   sh::ExactIndirectTable exact_indirect;       // M(s), order 3, faded at 1/η_indirect

@@ -44,9 +44,9 @@ std::vector<float> accumulate_log_occlusion(const FrameTables& tables, const glm
   const int order = tables.settings.sh_order;
   std::vector<float> f(std::size_t(order * order), 0.0f);
   float zonal[6];
-  const float minimum_sine = 1.0f / tables.settings.shadow_eta;
+  const float minimum_sine = 1.0f / tables.shadow_eta;
   for (const Sphere& sphere : spheres) {
-    if (outside_influence(p, sphere, tables.settings.shadow_eta)) continue;
+    if (outside_influence(p, sphere, tables.shadow_eta)) continue;
     const auto seen = sh::proxy_at_receiver(p, normal, {sphere.center, sphere.radius});
     if (!seen || seen->sine <= minimum_sine) continue;
     tables.log_occlusion.lookup(seen->sine, std::span<float>(zonal, std::size_t(order)));

@@ -248,7 +248,18 @@ settings::RenderSettings read_render(const json& value, const std::string& path)
     switch (field.kind) {
       case settings::FieldKind::boolean: field.set(s, detail::read_bool(*v, where) ? 1.0 : 0.0); break;
       case settings::FieldKind::integer: field.set(s, double(detail::read_int(*v, where))); break;
-      case settings::FieldKind::real: field.set(s, double(detail::read_float(*v, where))); break;
+      case settings::FieldKind::real: {
+        if (field.accepts_auto && v->is_string()) {  // "auto": chosen from the lighting
+          const std::string text = detail::read_string(*v, where);
+          if (text != settings::kAutoName) fail(where, "unknown value \"" + text + "\" (expected a number or \"auto\")");
+          field.set(s, double(settings::kEtaFromLighting));
+          break;
+        }
+        const double number = double(detail::read_float(*v, where));
+        if (settings::is_auto(field, number)) fail(where, "must be > " + std::to_string(int(field.min)) + " or \"auto\" (got 0)");
+        field.set(s, number);
+        break;
+      }
       case settings::FieldKind::choice: {
         const std::string text = detail::read_string(*v, where);
         const auto chosen = settings::choice_value(field, text);

@@ -155,7 +155,10 @@ ojson render_json(const settings::RenderSettings& r) {
     switch (field.kind) {
       case settings::FieldKind::boolean: j[key] = value != 0.0; break;
       case settings::FieldKind::integer: j[key] = int(value); break;
-      case settings::FieldKind::real: j[key] = number(float(value)); break;
+      case settings::FieldKind::real:
+        if (settings::is_auto(field, value)) j[key] = std::string(settings::kAutoName);
+        else j[key] = number(float(value));
+        break;
       case settings::FieldKind::choice: j[key] = std::string(settings::choice_name(field, int(value))); break;
     }
   }

@@ -88,6 +88,11 @@ Field real(std::string_view key, std::string_view description, Needs needs, doub
   return f;
 }
 
+Field with_auto(Field field) {
+  field.accepts_auto = true;
+  return field;
+}
+
 const std::vector<Field>& table() {
   using S = RenderSettings;
   static const std::vector<Field> fields = {
@@ -97,8 +102,8 @@ const std::vector<Field>& table() {
                             kNeedPipelines | kNeedTables | kNeedTargets, kMinShOrder, kMaxShOrder),
       integer<&S::receiver_scale>("receiver_scale", "k: receivers at 1/k of the display per axis", kNeedTargets,
                                   kReceiverScales.front(), kReceiverScales.back(), kReceiverScales),
-      real<&S::shadow_eta>("shadow_eta", "η of shadows: sphere of influence in proxy radii", kNeedTables | kNeedConstants,
-                           1.0, 1.5, 40.0),
+      with_auto(real<&S::shadow_eta>("shadow_eta", "η of shadows: sphere of influence in proxy radii (auto: from the lighting)",
+                                     kNeedTables | kNeedConstants, 1.0, 1.5, 40.0)),
       real<&S::indirect_eta>("indirect_eta", "η of indirect light: sphere of influence in proxy radii",
                              kNeedTables | kNeedConstants, 1.0, 1.5, 40.0),
       boolean<&S::sh_window>("sh_window", "ringing window on the SH lighting", kNeedTables),
@@ -166,7 +171,10 @@ const Field* find_field(std::string_view key) {
   return nullptr;
 }
 
+bool is_auto(const Field& field, double value) { return field.accepts_auto && value == double(kEtaFromLighting); }
+
 std::optional<std::string> check_value(const Field& field, double value) {
+  if (is_auto(field, value)) return std::nullopt;
   switch (field.kind) {
     case FieldKind::boolean:
       if (value != 0.0 && value != 1.0) return "must be true or false";
@@ -188,7 +196,8 @@ std::optional<std::string> check_value(const Field& field, double value) {
     }
     case FieldKind::real:
       if (!std::isfinite(value)) return std::string("must be a finite number");
-      if (field.min_exclusive && !(value > field.min)) return "must be > " + show(field.min) + " (got " + show(value) + ")";
+      if (field.min_exclusive && !(value > field.min))
+        return "must be > " + show(field.min) + (field.accepts_auto ? " or \"auto\"" : "") + " (got " + show(value) + ")";
       if (value > field.max) return "must be <= " + show(field.max) + " (got " + show(value) + ")";
       return std::nullopt;
   }

@@ -47,6 +47,8 @@ struct Field {
   bool min_exclusive = false;
   double ui_min = 0.0, ui_max = 0.0;
   std::span<const Choice> choices;  // choice: names in the order errors list them
+  // real: also the string "auto" in files and a checkbox in the UI, stored as kEtaFromLighting.
+  bool accepts_auto = false;
   double (*get)(const RenderSettings&) = nullptr;
   void (*set)(RenderSettings&, double) = nullptr;
 };
@@ -56,6 +58,9 @@ const Field* find_field(std::string_view key);
 
 // Why `value` is not allowed for `field` ("must be in 3..6 (got 7)"), or nothing when it is.
 std::optional<std::string> check_value(const Field& field, double value);
+// Whether `value` is the "auto" of a field that accepts it.
+bool is_auto(const Field& field, double value);
+inline constexpr std::string_view kAutoName = "auto";
 // The first invalid field of `settings` with its reason, as "key: reason"; nothing when valid.
 std::optional<std::string> check_settings(const RenderSettings& settings);
 

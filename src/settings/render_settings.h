@@ -58,12 +58,18 @@ inline constexpr int kMaxShOrder = 6;
 inline constexpr std::array<int, 4> kReceiverScales = {1, 2, 4, 8};  // k: receivers at 1/k resolution
 // VSGL lights per character (indirect_method vsgl): its triangles split into this many groups.
 inline constexpr std::array<int, 4> kVsglLightsPerCharacter = {1, 2, 4, 8};
+// shadow_eta = kEtaFromLighting ("auto" in scene files): η = √(c_L/kEtaCutoffError), c_L the
+// concentration of the frame's lighting (sh/influence_eta.h, notes/stability.md §1), so that
+// cutting a shadow at η·r costs about 1/255 of the unshadowed shade under any lighting. Resolved
+// where the tables are built (render::FrameTables::shadow_eta).
+inline constexpr float kEtaFromLighting = 0.0f;
+inline constexpr double kEtaCutoffError = 1.0 / 255.0;
 
 struct RenderSettings {
   ShadingMethod method = ShadingMethod::image_space;
   int sh_order = 4;             // kMinShOrder..kMaxShOrder
   int receiver_scale = 4;       // k, one of kReceiverScales
-  float shadow_eta = 15.0f;     // [η] sphere of influence of shadows / proxy radius, > 1
+  float shadow_eta = 15.0f;     // [η] sphere of influence of shadows / proxy radius, > 1, or kEtaFromLighting
   float indirect_eta = 10.0f;   // same for indirect light, > 1
   bool sh_window = true;        // ringing window cos(π l / 2h), h = 2n, on the lighting
   IndirectOperator indirect_operator = IndirectOperator::averaged;

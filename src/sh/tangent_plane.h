@@ -1,18 +1,8 @@
 #pragma once
-// Replacement rules for a sphere proxy that straddles the receiver's tangent plane or contains
-// the receiver (notes sh-math.md section 5; the GPU splat shader mirrors this function).
-// Receiver p with unit normal N, sphere (c, r); h = (c - p) . N, D = |c - p|.
-//   1. h <= -r (fully below the plane)                  -> skip
-//   2. D < r and h <= 0 (receiver inside, centre below)  -> skip
-//   3. -r < h < r: the sphere inscribed in the part above the plane along N,
-//        c' = c + N (r - h) / 2,  r' = (r + h) / 2  (keeps the top point c + rN; touches the
-//        plane at q1 = c - hN); continuous with rule 1 (r' -> 0) and with no change (h -> r).
-//   4. (continuity fix) if h <= 0: rho = sqrt(r^2 - h^2), r' *= min(1, (|p - q1| - rho) / rho),
-//        skip when that factor <= 0, so the proxy fades out as p approaches the cut circle
-//        instead of popping when p enters the sphere.
-//   5. s = sin(alpha) = min(r' / |c' - p|, 1), direction (c' - p) / |c' - p|.
-// Known remaining discontinuity: rule 4 applies for h <= 0 only, so at h = 0 the factor jumps
-// for receivers within 2 rho of q1 (tested and measured in tests/sh/tangent_plane_test.cpp).
+// The tangent-plane rules for a sphere proxy that straddles the receiver's tangent plane or
+// contains the receiver: the CPU twin of the GPU passes' proxy_seen_from. Both run the one
+// definition in shaders/shared/tangent_plane.h (the rules, their units and why they are
+// continuous are documented there).
 #include <optional>
 
 #include <glm/glm.hpp>
@@ -33,6 +23,10 @@ struct ProxyAtReceiver {
 
 // std::nullopt = skip the proxy at this receiver. normal must be unit.
 std::optional<ProxyAtReceiver> proxy_at_receiver(const glm::vec3& receiver, const glm::vec3& normal,
-                                                 const ProxySphere& sphere, bool continuity_fix = true);
+                                                 const ProxySphere& sphere);
+
+// φ of the rules (0 = skipped, 1 = the inscribed sphere unscaled) for a sphere of radius r whose
+// centre is h above the receiver's plane, x from the receiver along the plane (-r < h < r).
+float tangent_plane_fade(float h, float r, float x);
 
 }  // namespace proxygi::sh

@@ -114,10 +114,10 @@ std::vector<float> product_space_visibility(const render::FrameTables& tables, c
   const std::size_t count = std::size_t(order * order);
   std::vector<double> product(count, 0.0), rotated(count), next(count);
   product[0] = kSqrtFourPi;
-  const float minimum_sine = 1.0f / tables.settings.shadow_eta;
+  const float minimum_sine = 1.0f / tables.shadow_eta;
   for (const render::Sphere& sphere : spheres) {
     const glm::vec3 offset = sphere.center - p;
-    const float reach = tables.settings.shadow_eta * sphere.radius;
+    const float reach = tables.shadow_eta * sphere.radius;
     if (glm::dot(offset, offset) >= reach * reach) continue;
     const auto seen = sh::proxy_at_receiver(p, normal, {sphere.center, sphere.radius});
     if (!seen || seen->sine <= minimum_sine) continue;

@@ -18,12 +18,16 @@ SweepResult influence_fade(const StabilityOptions& options) {
   const float r = 0.1f;
   const int frames = options.quick ? 120 : 240;
   const glm::vec3 direction = glm::normalize(glm::vec3(1.0f, 1.0f, 0.0f));
-  const std::vector<float> etas = options.quick ? std::vector<float>{5, 10, 15, 30} : std::vector<float>{5, 7.5f, 10, 15, 20, 25, 30};
+  // Last: η from the lighting (shadow_eta "auto"), at the η it resolves to.
+  std::vector<float> etas = options.quick ? std::vector<float>{5, 10, 15, 30} : std::vector<float>{5, 7.5f, 10, 15, 20, 25, 30};
+  etas.push_back(settings::kEtaFromLighting);
   for (SweepLight light : {SweepLight::sky, SweepLight::delta}) {
     const sh::RgbSh lighting = sweep_lighting(light);
-    const std::string name = light == SweepLight::sky ? "sky" : "delta";
-    for (float eta : etas) {
-      const render::FrameTables tables = sweep_tables(lighting, 4, 8.0, eta);
+    for (float setting : etas) {
+      const render::FrameTables tables = sweep_tables(lighting, 4, 8.0, setting);
+      const float eta = tables.shadow_eta;
+      const std::string name = std::string(light == SweepLight::sky ? "sky" : "delta") +
+                               (setting == settings::kEtaFromLighting ? " light, auto eta" : " light");
       const TruthIntegrator truth(tables, 16);
       const double open = truth.unshadowed(glm::dvec3(kUp));
       ref::Plane method(frames, 1), exact(frames, 1);
@@ -48,12 +52,14 @@ SweepResult influence_fade(const StabilityOptions& options) {
         const ref::Plane r0(1, 1, exact.values[std::size_t(t - 1)]), r1(1, 1, exact.values[std::size_t(t)]);
         step = std::max(step, temporal_gradient_error(x0, x1, r0, r1, Reprojection::identity(1, 1)).max / (open * kDisplayStep));
       }
-      add_point(sweep, "hyb", name + " light", eta, 0, step);
-      add_point(sweep, "hyb", name + " light", eta, 1, missing);
-      if (eta == 15.0f) {  // the default η: the traces behind its two points
-        SweepTrace value{"blocked light (u)", "hyb, " + name + " light", {}, {}};
-        SweepTrace truth_trace{"blocked light (u)", "truth, " + name + " light", {}, {}};
-        SweepTrace change{"per-frame change minus the truth's (u)", "hyb, " + name + " light", {}, {}};
+      add_point(sweep, "hyb", name, eta, 0, step);
+      add_point(sweep, "hyb", name, eta, 1, missing);
+      if (setting == settings::kEtaFromLighting)
+        sweep.notes.push_back(name + ": eta = " + fixed(eta, 2) + " (c_L = " + fixed(double(eta) * eta * settings::kEtaCutoffError, 2) + ")");
+      if (setting == 15.0f) {  // the default η: the traces behind its two points
+        SweepTrace value{"blocked light (u)", "hyb, " + name, {}, {}};
+        SweepTrace truth_trace{"blocked light (u)", "truth, " + name, {}, {}};
+        SweepTrace change{"per-frame change minus the truth's (u)", "hyb, " + name, {}, {}};
         for (int t = 0; t < frames; ++t) {
           const double distance_r = 40.0 - 38.0 * double(t) / double(frames - 1);
           value.x.push_back(distance_r), truth_trace.x.push_back(distance_r);

@@ -11,7 +11,7 @@
 
 namespace proxygi::view {
 
-// `shadow_eta`: the η of the shells (settings::RenderSettings::shadow_eta).
+// `shadow_eta`: the η of the shells, the one in use (render::FrameTables::shadow_eta).
 void draw_overlays(const scene::CameraState& camera, const world::World* world, const world::WorldState& state,
                    const Toggles& toggles, float shadow_eta);
 

@@ -186,6 +186,7 @@ HudInfo Viewer::hud_info() const {
   if (renderer_) {
     hud.proxies = world_->proxy_count();
     hud.receivers = renderer_->config().receiver_count();
+    hud.shadow_eta = renderer_->frame().shadow_eta();
     for (const auto& model : world_->models())
       for (const auto& mesh : model->character.meshes)
         for (const auto& primitive : mesh.primitives) hud.triangles += primitive.indices.size() / 3;

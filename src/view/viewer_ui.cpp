@@ -160,6 +160,14 @@ void draw_settings(UiContext& ui) {
         break;
       }
       case settings::FieldKind::real: {
+        if (field.accepts_auto) {  // "auto" as a checkbox; unticked, the default number
+          bool automatic = settings::is_auto(field, value);
+          if (ImGui::Checkbox((key + " auto").c_str(), &automatic)) {
+            value = automatic ? double(settings::kEtaFromLighting) : field.get(settings::RenderSettings{});
+            changed = true;
+          }
+          if (automatic) break;
+        }
         float v = float(value);
         changed = ImGui::SliderFloat(key.c_str(), &v, float(field.ui_min), float(field.ui_max), "%.3g");
         value = v;
@@ -252,7 +260,7 @@ void draw_view_legend(UiContext& ui) {
   } else if (view == View::heat_map) {
     const std::size_t proxies = ui.hud.proxies;
     ImGui::Text("proxies kept per %dx%d-pixel tile (shadow eta %.3g), of %zu", 8 * render.receiver_scale,
-                8 * render.receiver_scale, render.shadow_eta, proxies);
+                8 * render.receiver_scale, ui.hud.shadow_eta, proxies);
     ImDrawList& list = *ImGui::GetWindowDrawList();
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     constexpr int kSteps = 64;
@@ -281,7 +289,7 @@ void draw_help() {
 UiRequests draw_ui(UiContext& ui) {
   UiRequests requests;
   ViewerState& state = ui.core.state();
-  if (ui.state) draw_overlays(ui.core.camera(), ui.world, *ui.state, state.toggles, state.settings.shadow_eta);
+  if (ui.state) draw_overlays(ui.core.camera(), ui.world, *ui.state, state.toggles, ui.hud.shadow_eta);
   if (state.toggles.hud) draw_hud(ui, requests);
   draw_playback(ui, requests);
   const ImVec2 display = ImGui::GetIO().DisplaySize;

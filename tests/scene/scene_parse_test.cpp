@@ -4,6 +4,7 @@
 #include <string>
 
 #include "scene/scene_parse.h"
+#include "scene/scene_write.h"
 
 namespace proxygi::scene {
 namespace {
@@ -187,6 +188,18 @@ TEST(SceneParse, TheOlderIndirectBooleanReadsAsAnIndirectMethod) {
     ASSERT_TRUE(scene.ok()) << scene.message();
     EXPECT_EQ(scene->render.indirect_method, expected) << text;
   }
+}
+
+TEST(SceneParse, ShadowEtaAutoReadsAsEtaFromTheLightingAndIsWrittenBack) {
+  auto scene = parse_scene(R"({"schema_version": 1, "render": {"shadow_eta": "auto"}})", "auto.json");
+  ASSERT_TRUE(scene.ok()) << scene.message();
+  EXPECT_EQ(scene->render.shadow_eta, settings::kEtaFromLighting);
+  auto text = to_json(*scene);
+  ASSERT_TRUE(text.ok()) << text.message();
+  EXPECT_NE(text->find("\"shadow_eta\": \"auto\""), std::string::npos) << *text;
+  auto again = parse_scene(*text, "again.json");
+  ASSERT_TRUE(again.ok()) << again.message();
+  EXPECT_EQ(again->render.shadow_eta, settings::kEtaFromLighting);
 }
 
 TEST(SceneParse, OrbitCamera) {

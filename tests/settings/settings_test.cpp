@@ -50,7 +50,14 @@ TEST(SettingsFields, LimitsAndMessages) {
   EXPECT_FALSE(check_value(*order, kMaxShOrder));
   EXPECT_EQ(*check_value(*scale, 3), "must be 1, 2, 4 or 8 (got 3)");
   for (int k : kReceiverScales) EXPECT_FALSE(check_value(*scale, k));
-  EXPECT_EQ(*check_value(*eta, 1.0), "must be > 1 (got 1)");
+  EXPECT_EQ(*check_value(*eta, 1.0), "must be > 1 or \"auto\" (got 1)");
+  // shadow_eta takes "auto" (kEtaFromLighting); indirect_eta does not.
+  const Field* indirect_eta = find_field("indirect_eta");
+  ASSERT_TRUE(indirect_eta);
+  EXPECT_TRUE(is_auto(*eta, kEtaFromLighting));
+  EXPECT_FALSE(check_value(*eta, kEtaFromLighting));
+  EXPECT_FALSE(is_auto(*indirect_eta, kEtaFromLighting));
+  EXPECT_EQ(*check_value(*indirect_eta, kEtaFromLighting), "must be > 1 (got 0)");
   EXPECT_EQ(*check_value(*tau, 0.0), "must be > 0 (got 0)");
   EXPECT_EQ(*check_value(*exposure, std::numeric_limits<double>::infinity()), "must be a finite number");
   EXPECT_FALSE(check_value(*exposure, -3.5));

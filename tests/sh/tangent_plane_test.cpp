@@ -1,4 +1,6 @@
-// Tangent-plane replacement rules: the cases and their continuity.
+// Tangent-plane rules (shaders/shared/tangent_plane.h): the cases, the joints of the fade and
+// continuity. Continuity is checked on s², which the blocked light of a cap follows.
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -12,8 +14,8 @@ const glm::vec3 kReceiver(0.0f);
 const glm::vec3 kNormal(0.0f, 1.0f, 0.0f);
 
 // Proxy strength as the receiver sees it: s (0 when skipped).
-float sine_at(const ProxySphere& sphere, bool fix = true) {
-  const auto result = proxy_at_receiver(kReceiver, kNormal, sphere, fix);
+float sine_at(const ProxySphere& sphere) {
+  const auto result = proxy_at_receiver(kReceiver, kNormal, sphere);
   return result ? result->sine : 0.0f;
 }
 
@@ -27,11 +29,13 @@ TEST(ShTangentPlane, SpheresAboveThePlaneAreUnchanged) {
 }
 
 TEST(ShTangentPlane, SkipsSpheresBelowThePlaneOrAroundTheReceiverWithCentreBelow) {
-  EXPECT_FALSE(proxy_at_receiver(kReceiver, kNormal, {{1.0f, -1.5f, 0.0f}, 1.0f}));  // rule 1
-  EXPECT_FALSE(proxy_at_receiver(kReceiver, kNormal, {{0.2f, -0.3f, 0.0f}, 1.0f}));  // rule 2
+  EXPECT_FALSE(proxy_at_receiver(kReceiver, kNormal, {{1.0f, -1.5f, 0.0f}, 1.0f}));  // below
+  EXPECT_FALSE(proxy_at_receiver(kReceiver, kNormal, {{0.2f, -0.3f, 0.0f}, 1.0f}));  // inside, centre below
+  EXPECT_FALSE(proxy_at_receiver(kReceiver, kNormal, {{0.0f, 0.0f, 0.0f}, 1.0f}));   // centre on the receiver
 }
 
-TEST(ShTangentPlane, StraddlingSphereIsReplacedByTheInscribedSphere) {
+TEST(ShTangentPlane, StraddlingSphereFarFromTheCutIsTheInscribedSphere) {
+  // x = 3 ≥ 2ρ (ρ = √(1 − 0.16)): the fade is 1, the inscribed sphere is unscaled.
   const ProxySphere sphere{{3.0f, 0.4f, 0.0f}, 1.0f};
   const auto result = proxy_at_receiver(kReceiver, kNormal, sphere);
   ASSERT_TRUE(result);
@@ -41,46 +45,69 @@ TEST(ShTangentPlane, StraddlingSphereIsReplacedByTheInscribedSphere) {
   EXPECT_NEAR(result->sphere.center.y - result->sphere.radius, 0.0f, 1e-6f);  // touches the plane
 }
 
+TEST(ShTangentPlane, FadeAtItsJointsAndLimits) {
+  const float r = 1.0f;
+  for (float h : {-0.9f, -0.5f, -0.3f, 0.0f}) {
+    const float rho = std::sqrt(r * r - h * h);
+    EXPECT_EQ(tangent_plane_fade(h, r, 0.5f * rho), 0.0f) << h;  // p inside, centre below: skipped
+    EXPECT_NEAR(tangent_plane_fade(h, r, 1.5f * rho), 0.5f, 1e-5f) << h;  // x/ρ − 1
+    EXPECT_EQ(tangent_plane_fade(h, r, 2.0f * rho), 1.0f) << h;
+  }
+  for (float h : {0.1f, 0.3f, 0.5f, 0.9f}) {
+    const float rho = std::sqrt(r * r - h * h);
+    EXPECT_NEAR(tangent_plane_fade(h, r, 0.0f), h / r, 1e-6f) << h;  // inside: φ = t
+    EXPECT_NEAR(tangent_plane_fade(h, r, rho), h / r, 1e-6f) << h;   // up to the cut circle
+    EXPECT_NEAR(tangent_plane_fade(h, r, 1.5f * rho), h / r + 0.5f * (1.0f - h / r), 1e-5f) << h;
+    EXPECT_EQ(tangent_plane_fade(h, r, 2.0f * rho), 1.0f) << h;
+  }
+  // The joint at h = 0 from both sides, at every x; the limit h → r.
+  for (float x = 0.0f; x < 3.0f; x += 0.01f)
+    EXPECT_NEAR(tangent_plane_fade(-1e-5f, r, x), tangent_plane_fade(1e-5f, r, x), 1e-4f) << x;
+  EXPECT_GT(tangent_plane_fade(0.99999f, r, 0.0f), 0.9999f);
+  EXPECT_EQ(tangent_plane_fade(0.99999f, r, 0.1f), 1.0f);
+}
+
 TEST(ShTangentPlane, ContinuousAsTheSphereSinksAndRises) {
-  // Sweep the centre height from below -r to above r at a fixed horizontal offset: s must
-  // change by small steps everywhere except (documented) at h = 0 for receivers near the cut.
-  for (float offset : {3.0f, 6.0f}) {
+  // Sweep the centre height from below −r to above r at fixed horizontal offsets, including
+  // receivers inside the sphere (offsets < 1) and near the cut circle: s² changes by small steps.
+  for (float offset : {0.0f, 0.3f, 0.8f, 1.0f, 1.5f, 3.0f, 6.0f}) {
     float previous = sine_at({{offset, -1.2f, 0.0f}, 1.0f});
     EXPECT_EQ(previous, 0.0f);
     for (int k = 1; k <= 4000; ++k) {
       const float h = -1.2f + 2.4f * float(k) / 4000.0f;
       const float s = sine_at({{offset, h, 0.0f}, 1.0f});
-      EXPECT_LT(std::abs(s - previous), 2e-3f) << "offset " << offset << " h " << h;
+      EXPECT_LT(std::abs(s * s - previous * previous), 3e-3f) << "offset " << offset << " h " << h;
       previous = s;
     }
   }
 }
 
-TEST(ShTangentPlane, ContinuityFixRemovesThePopWhenTheReceiverEntersTheSphere) {
-  // Centre below the plane (h = -0.3): as the receiver slides toward the cut circle the proxy
-  // fades to 0 with the fix; without it, it pops from a finite size to nothing.
-  const float h = -0.3f, r = 1.0f, rho = std::sqrt(r * r - h * h);
-  auto at_distance = [&](float distance, bool fix) { return sine_at({{distance, h, 0.0f}, r}, fix); };
-  const float just_outside = rho + 1e-4f;
-  EXPECT_LT(at_distance(just_outside, true), 1e-3f);
-  EXPECT_GT(at_distance(just_outside, false), 0.05f);
-  EXPECT_EQ(at_distance(rho - 1e-4f, true), 0.0f);
-  EXPECT_EQ(at_distance(rho - 1e-4f, false), 0.0f);
-  // Beyond 2 rho the fix changes nothing.
-  EXPECT_EQ(at_distance(2.5f * rho, true), at_distance(2.5f * rho, false));
+TEST(ShTangentPlane, ContinuousAsTheReceiverSlidesThroughTheCutCircle) {
+  // Sideways at fixed heights: s² has no step where p enters or leaves the sphere.
+  for (float h : {-0.5f, -0.3f, 0.0f, 0.3f, 0.5f}) {
+    float previous = sine_at({{-2.5f, h, 0.0f}, 1.0f});
+    for (int k = 1; k <= 5000; ++k) {
+      const float x = -2.5f + 5.0f * float(k) / 5000.0f;
+      const float s = sine_at({{x, h, 0.0f}, 1.0f});
+      EXPECT_LT(std::abs(s * s - previous * previous), 3e-3f) << "h " << h << " x " << x;
+      previous = s;
+    }
+  }
+  // Centre below the plane: the proxy vanishes as p reaches the cut circle.
+  const float h = -0.3f, rho = std::sqrt(1.0f - h * h);
+  EXPECT_LT(sine_at({{rho + 1e-4f, h, 0.0f}, 1.0f}), 2e-2f);
+  EXPECT_EQ(sine_at({{rho - 1e-4f, h, 0.0f}, 1.0f}), 0.0f);
 }
 
-TEST(ShTangentPlane, TheRemainingJumpAtHZeroIsBounded) {
-  // Rule 4 applies for h <= 0 only: measure the jump at h = 0 for receivers between rho and 2 rho.
-  float largest_jump = 0.0f;
-  for (int k = 1; k < 100; ++k) {
-    const float distance = 1.0f + float(k) / 100.0f;
-    const float below = sine_at({{distance, 0.0f, 0.0f}, 1.0f});
-    const float above = sine_at({{distance, 1e-6f, 0.0f}, 1.0f});
-    largest_jump = std::max(largest_jump, std::abs(above - below));
+TEST(ShTangentPlane, SphereSinkingThroughTheReceiverFadesLinearlyInSSquared) {
+  // p on the axis (x = 0) inside the sphere: the inscribed sphere touches p, so s = √φ = √(h/r)
+  // and s² falls linearly from 1 (h = r, the sphere touching p from above) to 0 (h = 0).
+  for (float h : {0.05f, 0.25f, 0.5f, 0.75f, 0.95f}) {
+    const float s = sine_at({{0.0f, h, 0.0f}, 1.0f});
+    EXPECT_NEAR(s * s, h, 1e-5f) << h;
   }
-  EXPECT_GT(largest_jump, 0.0f);  // documented, not fixed: the inscribed sphere is r/2 at h = 0
-  EXPECT_LT(largest_jump, 0.5f);
+  EXPECT_NEAR(sine_at({{0.0f, 1.0001f, 0.0f}, 1.0f}), 1.0f, 1e-3f);
+  EXPECT_EQ(sine_at({{0.0f, -1e-4f, 0.0f}, 1.0f}), 0.0f);
 }
 
 }  // namespace
