@@ -37,6 +37,9 @@ struct ViewerOptions {
   bool adaptive_resolution = true;   // lower internal resolution below min_fps
   double min_fps = 15.0;
   bool show_ui = true;
+  // Blend a cached UI overlay, redrawn when the UI changes (overlay_cache.h); false: ImGui
+  // rasterized onto every frame.
+  bool ui_cache = true;
   bool play = false;                 // start playing
   std::optional<Script> script;      // drive the viewer from a script (fixed time step)
   int max_frames = 0;                // stop after this many rendered frames (0: no limit)
