@@ -1,7 +1,8 @@
 #pragma once
 // Viewer: the state of one run of the viewer application (viewer_app.h is its entry point).
 // Split over viewer.cpp (set-up, the loop, events, loading), viewer_frame.cpp (one frame:
-// world state, adaptive resolution, render, UI, screenshot, present) and viewer_files.cpp
+// world state, adaptive resolution, UI build, the previous frame's present, render, UI pass,
+// screenshot) and viewer_files.cpp
 // (scene saving, screenshots, the state file for tests).
 #include <chrono>
 #include <deque>

@@ -4,8 +4,9 @@
 // background. One loop serves people, scripts and tests:
 //
 //   per frame: events (window, script) → core → settings applied in place (apply_settings) →
-//   world evaluated at the core's time with its camera → frame rendered into the target image
-//   (at a lower internal resolution when adaptive) → UI pass → screenshot → present.
+//   world evaluated at the core's time with its camera → UI built → (window) the previous
+//   frame presented, an image acquired → frame rendered into the target image (at a lower
+//   internal resolution when adaptive) → UI pass (a cached overlay, overlay_cache.h) → screenshot.
 //
 // Loading never blocks the loop: open_scene and world::World::load (import, rig fit or cache)
 // run on a thread; the previous scene keeps playing, and a failure is shown in the window
