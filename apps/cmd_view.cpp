@@ -1,5 +1,5 @@
 // proxygi view [SCENE.json | MODEL.glb | MODEL.gltf | mannequin | default | crowd] [--offscreen] [--script FILE.json]
-//              [--width W --height H] [--no-vsync] [--no-adaptive] [--no-ui] [--play] [--validation]
+//              [--width W --height H] [--no-vsync] [--no-adaptive] [--no-ui] [--no-ui-cache] [--play] [--validation]
 //              [--max-frames N] [--state-out FILE.json] [--device NAME|INDEX]
 // The interactive viewer (src/view): a window with the frame, its HUD and live settings, or an
 // offscreen image driven by a script. Screenshots go through the recorder's PNG writer.
@@ -19,7 +19,7 @@ struct ViewArgs {
   std::string script;
   bool offscreen = false;
   int width = 1280, height = 720;
-  bool no_vsync = false, no_adaptive = false, no_ui = false, validation = false, play = false;
+  bool no_vsync = false, no_adaptive = false, no_ui = false, no_ui_cache = false, validation = false, play = false;
   int max_frames = 0;
   std::string state_out;
   std::string device;
@@ -37,6 +37,7 @@ int run_view(const ViewArgs& args, std::chrono::steady_clock::time_point started
   options.validation = args.validation;
   options.adaptive_resolution = !args.no_adaptive;
   options.show_ui = !args.no_ui;
+  options.ui_cache = !args.no_ui_cache;
   options.play = args.play;
   options.max_frames = args.max_frames;
   options.state_out = args.state_out;
@@ -68,6 +69,7 @@ void add_view_command(CLI::App& app, CommandRunner& runner) {
   command->add_flag("--no-vsync", args->no_vsync, "present with mailbox or immediate instead of FIFO");
   command->add_flag("--no-adaptive", args->no_adaptive, "never lower the internal resolution");
   command->add_flag("--no-ui", args->no_ui, "hide the UI (as F10)");
+  command->add_flag("--no-ui-cache", args->no_ui_cache, "rasterize the UI onto every frame instead of blending a cached overlay");
   command->add_flag("--play", args->play, "start playing (as Space)");
   command->add_flag("--validation", args->validation, "Vulkan validation on; any message fails the run");
   command->add_option("--max-frames", args->max_frames, "quit after N frames")->check(CLI::NonNegativeNumber);

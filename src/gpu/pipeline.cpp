@@ -150,6 +150,11 @@ Result<Pipeline> Pipeline::graphics(const Context& context, const GraphicsPipeli
     attachment.srcColorBlendFactor = attachment.dstColorBlendFactor = VK_BLEND_FACTOR_ONE;
     attachment.srcAlphaBlendFactor = attachment.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
     attachment.colorBlendOp = attachment.alphaBlendOp = VK_BLEND_OP_ADD;
+  } else if (description.blend == BlendMode::premultiplied_over) {
+    attachment.blendEnable = VK_TRUE;
+    attachment.srcColorBlendFactor = attachment.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+    attachment.dstColorBlendFactor = attachment.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+    attachment.colorBlendOp = attachment.alphaBlendOp = VK_BLEND_OP_ADD;
   }
   const std::vector<VkPipelineColorBlendAttachmentState> attachments(description.color_formats.size(), attachment);
   VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};

@@ -45,7 +45,9 @@ class PipelineLayout {
   std::uint32_t push_constant_bytes_ = 0;
 };
 
-enum class BlendMode { none, additive };  // additive: dst = src + dst on color and alpha
+// additive: dst = src + dst on color and alpha; premultiplied_over: dst = src + (1 − src.a) · dst
+// on color and alpha (a premultiplied layer over what is there).
+enum class BlendMode { none, additive, premultiplied_over };
 
 struct GraphicsPipelineDescription {
   std::string vertex_shader;    // embedded shader file name, e.g. "gbuffer.vert"

@@ -1,5 +1,7 @@
 #include "view/ui_pass.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include <imgui.h>
@@ -15,6 +17,59 @@ void check_imgui_result(VkResult result) {
 }
 
 }  // namespace
+
+std::vector<PixelRect> touched_rects(const ImDrawData& draw_data) {
+  std::vector<PixelRect> rects;
+  for (int l = 0; l < draw_data.CmdListsCount; ++l) {
+    const ImDrawList& list = *draw_data.CmdLists[l];
+    for (const ImDrawCmd& command : list.CmdBuffer) {
+      if (command.UserCallback || command.ElemCount == 0) continue;
+      ImVec2 low(1e30f, 1e30f), high(-1e30f, -1e30f);
+      for (unsigned i = 0; i < command.ElemCount; ++i) {
+        const ImVec2 p = list.VtxBuffer[int(command.VtxOffset + list.IdxBuffer[int(command.IdxOffset + i)])].pos;
+        low = {std::min(low.x, p.x), std::min(low.y, p.y)}, high = {std::max(high.x, p.x), std::max(high.y, p.y)};
+      }
+      const ImVec2 origin = draw_data.DisplayPos;
+      const float x0 = std::max(low.x, command.ClipRect.x) - origin.x, y0 = std::max(low.y, command.ClipRect.y) - origin.y;
+      const float x1 = std::min(high.x, command.ClipRect.z) - origin.x, y1 = std::min(high.y, command.ClipRect.w) - origin.y;
+      if (x1 < x0 || y1 < y0) continue;
+      rects.push_back({int(std::floor(x0)) - 1, int(std::floor(y0)) - 1, int(std::ceil(x1)) + 1, int(std::ceil(y1)) + 1});
+    }
+  }
+  return rects;
+}
+
+namespace {
+
+template <typename T>
+void append(std::vector<std::uint8_t>& out, const T& value) {
+  const auto* bytes = reinterpret_cast<const std::uint8_t*>(&value);
+  out.insert(out.end(), bytes, bytes + sizeof(T));
+}
+
+}  // namespace
+
+void draw_signature(const ImDrawData& draw_data, const ImDrawList* scene_list, DrawSignature& out) {
+  out.scene.clear(), out.panels.clear();
+  for (std::vector<std::uint8_t>* part : {&out.scene, &out.panels}) {
+    append(*part, draw_data.DisplayPos), append(*part, draw_data.DisplaySize);
+    append(*part, draw_data.FramebufferScale);
+  }
+  for (int l = 0; l < draw_data.CmdListsCount; ++l) {
+    const ImDrawList& list = *draw_data.CmdLists[l];
+    std::vector<std::uint8_t>& part = &list == scene_list ? out.scene : out.panels;
+    append(part, l), append(part, list.VtxBuffer.Size), append(part, list.IdxBuffer.Size), append(part, list.CmdBuffer.Size);
+    for (const ImDrawCmd& command : list.CmdBuffer) {  // field by field: no padding bytes
+      append(part, command.ClipRect), append(part, command.TextureId), append(part, command.VtxOffset);
+      append(part, command.IdxOffset), append(part, command.ElemCount), append(part, command.UserCallback);
+    }
+    static_assert(sizeof(ImDrawVert) == sizeof(ImVec2) * 2 + sizeof(ImU32), "ImDrawVert without padding");
+    const auto* vertices = reinterpret_cast<const std::uint8_t*>(list.VtxBuffer.Data);
+    part.insert(part.end(), vertices, vertices + std::size_t(list.VtxBuffer.Size) * sizeof(ImDrawVert));
+    const auto* indices = reinterpret_cast<const std::uint8_t*>(list.IdxBuffer.Data);
+    part.insert(part.end(), indices, indices + std::size_t(list.IdxBuffer.Size) * sizeof(ImDrawIdx));
+  }
+}
 
 Result<std::unique_ptr<UiPass>> UiPass::create(gpu::Context& context, VkFormat format, VkImageLayout final_layout,
                                                std::uint32_t image_count) {
@@ -51,6 +106,20 @@ Result<std::unique_ptr<UiPass>> UiPass::create(gpu::Context& context, VkFormat f
   info.dependencyCount = 1;
   info.pDependencies = &dependency;
   PROXYGI_VK_TRY(vkCreateRenderPass(device, &info, nullptr, &pass->render_pass_));
+  pass->final_layout_ = final_layout;
+
+  // The overlay: cleared to transparent black, ImGui drawn (the same pipeline, so a compatible
+  // pass: only load/store ops and layouts may differ, the dependency is the same), then a
+  // barrier makes it readable by the blend's fragment shader in the same command buffer.
+  VkAttachmentDescription overlay = color;
+  overlay.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  overlay.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  overlay.finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  info.pAttachments = &overlay;
+  PROXYGI_VK_TRY(vkCreateRenderPass(device, &info, nullptr, &pass->overlay_render_pass_));
+  auto blend = OverlayBlendPass::create(context, format);
+  if (!blend) return blend.error();
+  pass->blend_ = std::move(*blend);
 
   VkDescriptorPoolSize pool_size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 16};
   VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
@@ -100,12 +169,88 @@ UiPass::~UiPass() {
   if (command_pool_) vkDestroyCommandPool(device, command_pool_, nullptr);
   if (descriptor_pool_) vkDestroyDescriptorPool(device, descriptor_pool_, nullptr);
   if (render_pass_) vkDestroyRenderPass(device, render_pass_, nullptr);
+  if (overlay_render_pass_) vkDestroyRenderPass(device, overlay_render_pass_, nullptr);
 }
 
 void UiPass::forget_framebuffers() {
   if (pending_) (void)wait();  // a lost device shows on the next submit
   for (auto& [view, framebuffer] : framebuffers_) vkDestroyFramebuffer(context_.device(), framebuffer, nullptr);
   framebuffers_.clear();
+  if (overlay_framebuffer_) vkDestroyFramebuffer(context_.device(), overlay_framebuffer_, nullptr);
+  overlay_framebuffer_ = VK_NULL_HANDLE;
+  overlay_.reset();
+  overlay_drawn_ = false;
+  overlay_rects_.clear();
+}
+
+bool UiPass::overlay_cached(std::uint32_t width, std::uint32_t height) const {
+  return overlay_drawn_ && overlay_ && overlay_->width() == width && overlay_->height() == height;
+}
+
+Status UiPass::make_overlay(const TargetImage& target) {
+  if (overlay_ && overlay_->width() == target.width && overlay_->height() == target.height) return {};
+  if (Status s = wait(); !s) return s;
+  if (overlay_framebuffer_) vkDestroyFramebuffer(context_.device(), overlay_framebuffer_, nullptr);
+  overlay_framebuffer_ = VK_NULL_HANDLE;
+  overlay_drawn_ = false;
+  auto image = gpu::Image::create(context_, target.width, target.height, target.format,
+                                  VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT);
+  if (!image) return image.error();
+  overlay_ = std::move(*image);
+  VkImageView view = overlay_->view();
+  VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+  info.renderPass = overlay_render_pass_;
+  info.attachmentCount = 1;
+  info.pAttachments = &view;
+  info.width = target.width;
+  info.height = target.height;
+  info.layers = 1;
+  PROXYGI_VK_TRY(vkCreateFramebuffer(context_.device(), &info, nullptr, &overlay_framebuffer_));
+  return {};
+}
+
+// Overlay (drawn again or as it is) blended over the frame, then the target to the final layout.
+void UiPass::record_overlay(const TargetImage& target, ImDrawData* draw_data, UiDraw how, VkImageLayout final_layout) {
+  if (how == UiDraw::redraw_overlay) {
+    VkClearValue clear{};  // transparent black
+    VkRenderPassBeginInfo pass{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+    pass.renderPass = overlay_render_pass_;
+    pass.framebuffer = overlay_framebuffer_;
+    pass.renderArea.extent = {target.width, target.height};
+    pass.clearValueCount = 1;
+    pass.pClearValues = &clear;
+    vkCmdBeginRenderPass(commands_, &pass, VK_SUBPASS_CONTENTS_INLINE);
+    if (draw_data->CmdListsCount > 0) ImGui_ImplVulkan_RenderDrawData(draw_data, commands_);
+    vkCmdEndRenderPass(commands_);
+    VkImageMemoryBarrier readable{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+    readable.srcQueueFamilyIndex = readable.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    readable.image = overlay_->handle();
+    readable.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    readable.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+    readable.dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
+    readable.oldLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    readable.newLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    vkCmdPipelineBarrier(commands_, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0,
+                         0, nullptr, 0, nullptr, 1, &readable);
+    overlay_rects_ = covering_rects(touched_rects(*draw_data), int(target.width), int(target.height));
+    overlay_drawn_ = true;
+  }
+  VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+  barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  barrier.image = target.image;
+  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  // The frame's copy into the image (an earlier submission) before the blend loads it.
+  barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  barrier.dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  barrier.oldLayout = barrier.newLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  vkCmdPipelineBarrier(commands_, VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                       VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, 0, 0, nullptr, 0, nullptr, 1, &barrier);
+  blend_->record(context_, commands_, {overlay_->view(), overlay_rects_}, {&target});
+  barrier.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  barrier.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT;
+  barrier.newLayout = final_layout;
+  vkCmdPipelineBarrier(commands_, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0,
+                       0, nullptr, 0, nullptr, 1, &barrier);
 }
 
 Result<VkFramebuffer> UiPass::framebuffer(const TargetImage& target) {
@@ -130,8 +275,14 @@ Status UiPass::wait() {
   return {};
 }
 
-Status UiPass::submit(const TargetImage& target, ImDrawData* draw_data, VkSemaphore signal) {
+Status UiPass::submit(const TargetImage& target, ImDrawData* draw_data, UiDraw how, VkSemaphore signal) {
   if (Status s = wait(); !s) return s;
+  const bool cached = draw_data && how != UiDraw::direct;
+  if (cached && how == UiDraw::reuse_overlay && !overlay_cached(target.width, target.height))
+    return make_error("ui pass: no overlay of " + std::to_string(target.width) + "x" + std::to_string(target.height) +
+                      " to reuse");
+  if (cached)
+    if (Status s = make_overlay(target); !s) return s;
   auto framebuffer_handle = framebuffer(target);
   if (!framebuffer_handle) return framebuffer_handle.error();
   PROXYGI_VK_TRY(vkResetFences(context_.device(), 1, &fence_));
@@ -140,13 +291,17 @@ Status UiPass::submit(const TargetImage& target, ImDrawData* draw_data, VkSemaph
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   PROXYGI_VK_TRY(vkBeginCommandBuffer(commands_, &begin));
   context_.begin_label(commands_, "ui");
-  VkRenderPassBeginInfo pass{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-  pass.renderPass = render_pass_;
-  pass.framebuffer = *framebuffer_handle;
-  pass.renderArea.extent = {target.width, target.height};
-  vkCmdBeginRenderPass(commands_, &pass, VK_SUBPASS_CONTENTS_INLINE);
-  if (draw_data && draw_data->CmdListsCount > 0) ImGui_ImplVulkan_RenderDrawData(draw_data, commands_);
-  vkCmdEndRenderPass(commands_);
+  if (cached) {
+    record_overlay(target, draw_data, how, final_layout_);
+  } else {
+    VkRenderPassBeginInfo pass{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+    pass.renderPass = render_pass_;
+    pass.framebuffer = *framebuffer_handle;
+    pass.renderArea.extent = {target.width, target.height};
+    vkCmdBeginRenderPass(commands_, &pass, VK_SUBPASS_CONTENTS_INLINE);
+    if (draw_data && draw_data->CmdListsCount > 0) ImGui_ImplVulkan_RenderDrawData(draw_data, commands_);
+    vkCmdEndRenderPass(commands_);
+  }
   context_.end_label(commands_);
   PROXYGI_VK_TRY(vkEndCommandBuffer(commands_));
   VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};

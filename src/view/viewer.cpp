@@ -200,6 +200,8 @@ Status Viewer::run() {
     if (script_ && script_->finished() && !loader_.busy() && screenshots_.empty()) break;
     if (options_.quit_when_rigged && rendered_last_ && previews_ > 0 && !loader_.busy() && world_->proxy_count() > 0) break;
   }
+  if (swapchain_)
+    if (Status s = present_pending(); !s) return s;
   if (context_) vkDeviceWaitIdle(context_->device());
   if (Status s = write_state(); !s) return s;
   if (options_.validation && context_->validation_message_count() > 0)

@@ -1,7 +1,8 @@
 #pragma once
 // Viewer: the state of one run of the viewer application (viewer_app.h is its entry point).
 // Split over viewer.cpp (set-up, the loop, events, loading), viewer_frame.cpp (one frame:
-// world state, adaptive resolution, render, UI, screenshot, present) and viewer_files.cpp
+// world state, adaptive resolution, UI build, the previous frame's present, render, UI pass,
+// screenshot) and viewer_files.cpp
 // (scene saving, screenshots, the state file for tests).
 #include <chrono>
 #include <deque>
@@ -60,12 +61,15 @@ class Viewer {
   Status make_renderer();
   // viewer_frame.cpp
   Status frame();
+  Status prepare_frame(std::uint32_t display_width, std::uint32_t display_height);
   Status render_into(const TargetImage& target);
   Status finish_oldest();  // waits for the oldest frame in flight
   Status finish_all();
   void evaluate_world();
   void adapt_resolution(double frame_ms);
-  Status finish_ui(const TargetImage& target, VkSemaphore signal, VkImageLayout final_layout);
+  void build_ui(std::uint32_t width, std::uint32_t height);
+  Status submit_ui(const TargetImage& target, VkSemaphore signal, VkImageLayout final_layout);
+  Status present_pending();  // the swapchain image of the previous frame, if any
   HudInfo hud_info() const;
   // viewer_files.cpp
   Status save_scene(const std::string& path);
@@ -78,6 +82,14 @@ class Viewer {
   std::unique_ptr<gpu::Context> context_;
   std::unique_ptr<Swapchain> swapchain_;
   bool swapchain_stale_ = false;
+  struct PendingPresent {
+    std::uint32_t index = 0;
+    bool stale = false;  // acquired suboptimal: rebuild after presenting
+  };
+  std::optional<PendingPresent> pending_present_;  // drawn, presented at the next frame
+  bool ui_with_ = false;  // build_ui → submit_ui
+  UiDraw ui_how_ = UiDraw::direct;
+  UiRequests ui_requests_;
   std::optional<gpu::Image> offscreen_;
   ImGuiContext* imgui_ = nullptr;
   std::unique_ptr<UiPass> ui_pass_;
@@ -120,6 +132,14 @@ class Viewer {
   std::string pass_clock_;  // how passes_ were measured (HUD)
   FrameTimes times_;
   FrameParts parts_;
+  bool ui_input_ = false;
+  glm::vec2 last_mouse_{-1e30f, -1e30f};  // ImGui's pointer at the previous frame  // an input event arrived this frame (the overlay shows it at once)
+  DrawSignature overlay_signature_;  // of the overlay drawn last
+  DrawSignature draw_signature_;     // scratch: this frame's
+  double ui_clock_s_ = 0.0;           // sum of ImGui's steps (wall time; a script's fixed step)
+  double overlay_drawn_at_s_ = 0.0;  // ui_clock_s_ when the overlay was drawn
+  int overlay_draws_ = 0, overlay_reuses_ = 0, ui_direct_draws_ = 0;  // frames with the UI, by how
+  int screenshots_reusing_ = 0;  // screenshots with the UI that blended an overlay drawn earlier
   std::string save_path_ = "viewer_scene.json";
   std::string open_path_;
 };

@@ -4,8 +4,9 @@
 // background. One loop serves people, scripts and tests:
 //
 //   per frame: events (window, script) → core → settings applied in place (apply_settings) →
-//   world evaluated at the core's time with its camera → frame rendered into the target image
-//   (at a lower internal resolution when adaptive) → UI pass → screenshot → present.
+//   world evaluated at the core's time with its camera → UI built → (window) the previous
+//   frame presented, an image acquired → frame rendered into the target image (at a lower
+//   internal resolution when adaptive) → UI pass (a cached overlay, overlay_cache.h) → screenshot.
 //
 // Loading never blocks the loop: open_scene and world::World::load (import, rig fit or cache)
 // run on a thread; the previous scene keeps playing, and a failure is shown in the window
@@ -37,6 +38,9 @@ struct ViewerOptions {
   bool adaptive_resolution = true;   // lower internal resolution below min_fps
   double min_fps = 15.0;
   bool show_ui = true;
+  // Blend a cached UI overlay, redrawn when the UI changes (overlay_cache.h); false: ImGui
+  // rasterized onto every frame.
+  bool ui_cache = true;
   bool play = false;                 // start playing
   std::optional<Script> script;      // drive the viewer from a script (fixed time step)
   int max_frames = 0;                // stop after this many rendered frames (0: no limit)

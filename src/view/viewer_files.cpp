@@ -96,6 +96,10 @@ Status Viewer::write_state() const {
   json["frames"] = frames_;
   json["proxies"] = world_ ? world_->proxy_count() : 0;
   json["previews"] = previews_;
+  json["ui_overlay_draws"] = overlay_draws_;    // frames that rasterized ImGui into the overlay
+  json["ui_overlay_reuses"] = overlay_reuses_;  // frames that blended the overlay as it was
+  json["ui_direct_draws"] = ui_direct_draws_;   // frames that rasterized ImGui onto the frame
+  json["ui_screenshots_reusing_overlay"] = screenshots_reusing_;
   json["frames_without_proxies"] = frames_without_proxies_;
   json["fps_mean"] = times_.mean() > 0.0 ? 1000.0 / times_.mean() : 0.0;
   json["frame_ms"] = {{"mean", times_.mean()}, {"min", times_.min()}, {"max", times_.max()}};

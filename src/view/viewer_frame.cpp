@@ -92,10 +92,12 @@ void Viewer::adapt_resolution(double frame_ms) {
   else if (mean < 0.45 * budget && current != std::begin(kScales)) scale_ = *(current - 1);
 }
 
-Status Viewer::render_into(const TargetImage& target) {
-  if (!renderer_) return clear_target(*context_, target);
-  const std::uint32_t width = std::max(16u, std::uint32_t(std::lround(target.width * scale_)));
-  const std::uint32_t height = std::max(16u, std::uint32_t(std::lround(target.height * scale_)));
+// The CPU half before anything is submitted: settings and internal size in place, the world
+// evaluated (the UI's overlays draw this state, and the renderer renders it).
+Status Viewer::prepare_frame(std::uint32_t display_width, std::uint32_t display_height) {
+  if (!renderer_) return {};
+  const std::uint32_t width = std::max(16u, std::uint32_t(std::lround(display_width * scale_)));
+  const std::uint32_t height = std::max(16u, std::uint32_t(std::lround(display_height * scale_)));
   if (core_->state().settings != applied_settings_ || width != internal_width_ || height != internal_height_) {
     if (Status s = finish_all(); !s) return s;
     if (Status s = renderer_->apply_settings(core_->state().settings, width, height); !s) {
@@ -107,6 +109,11 @@ Status Viewer::render_into(const TargetImage& target) {
     }
   }
   evaluate_world();
+  return {};
+}
+
+Status Viewer::render_into(const TargetImage& target) {
+  if (!renderer_) return clear_target(*context_, target);
   gpu::FrameRequest request;
   request.state = &state_;
   request.frame = core_->state().playback.frame();
@@ -195,19 +202,25 @@ HudInfo Viewer::hud_info() const {
   return hud;
 }
 
-// The UI over the frame in `target`, the screenshot when one is due, then (window) present.
-Status Viewer::finish_ui(const TargetImage& target, VkSemaphore signal, VkImageLayout final_layout) {
+// This frame's UI (ImGui's draw lists for a target of this size) and how it reaches the frame.
+void Viewer::build_ui(std::uint32_t width, std::uint32_t height) {
   const bool with_ui = options_.show_ui && core_ && core_->state().toggles.ui &&
                        !(!screenshots_.empty() && !screenshots_.front().with_ui);
   ImGuiIO& io = ImGui::GetIO();
   if (window_) {
-    window_->new_imgui_frame(target.width, target.height, ui_dt_s_);
+    window_->new_imgui_frame(width, height, ui_dt_s_);
   } else {
-    io.DisplaySize = {float(target.width), float(target.height)};
+    io.DisplaySize = {float(width), float(height)};
     io.DeltaTime = float(step_s_);
   }
   ImGui_ImplVulkan_NewFrame();
   ImGui::NewFrame();
+  // Pointer moves and held buttons are input for the overlay too (hover highlights, drags).
+  bool pointer = io.MousePos.x != last_mouse_.x || io.MousePos.y != last_mouse_.y || io.MouseWheel != 0.0f ||
+                 io.MouseWheelH != 0.0f || io.InputQueueCharacters.Size > 0;
+  for (bool down : io.MouseDown) pointer = pointer || down;
+  last_mouse_ = {io.MousePos.x, io.MousePos.y};
+  ui_input_ = ui_input_ || pointer;
   UiRequests requests;
   if (with_ui) {
     const HudInfo hud = hud_info();
@@ -215,8 +228,39 @@ Status Viewer::finish_ui(const TargetImage& target, VkSemaphore signal, VkImageL
     requests = draw_ui(ui);
   }
   ImGui::Render();
+  UiDraw how = UiDraw::direct;
+  ui_clock_s_ += double(io.DeltaTime);
+  if (with_ui && options_.ui_cache) {
+    draw_signature(*ImGui::GetDrawData(), ImGui::GetBackgroundDrawList(), draw_signature_);
+    OverlayChange change;
+    change.cached = ui_pass_->overlay_cached(width, height);
+    change.exact = !screenshots_.empty();
+    change.scene_changed = draw_signature_.scene != overlay_signature_.scene;
+    change.panels_changed = draw_signature_.panels != overlay_signature_.panels;
+    change.input = ui_input_;
+    change.since_draw_s = ui_clock_s_ - overlay_drawn_at_s_;
+    if (redraw_due(change)) {
+      how = UiDraw::redraw_overlay;
+      std::swap(overlay_signature_, draw_signature_);
+      overlay_drawn_at_s_ = ui_clock_s_;
+      ++overlay_draws_;
+    } else {
+      how = UiDraw::reuse_overlay;
+      ++overlay_reuses_;
+      screenshots_reusing_ += change.exact ? 1 : 0;
+    }
+  } else if (with_ui) {
+    ++ui_direct_draws_;
+  }
+  ui_with_ = with_ui, ui_how_ = how, ui_requests_ = requests;
   parts_.lap(FramePart::ui_build);
-  if (Status s = ui_pass_->submit(target, with_ui ? ImGui::GetDrawData() : nullptr, signal); !s) return s;
+}
+
+// The UI built by build_ui over the frame in `target`, then the screenshot when one is due.
+Status Viewer::submit_ui(const TargetImage& target, VkSemaphore signal, VkImageLayout final_layout) {
+  const UiRequests requests = ui_requests_;
+  if (Status s = ui_pass_->submit(target, ui_with_ ? ImGui::GetDrawData() : nullptr, ui_how_, signal); !s) return s;
+  ui_input_ = false;
   parts_.lap(FramePart::ui_submit);
   if (!screenshots_.empty()) {
     if (Status s = ui_pass_->wait(); !s) return s;
@@ -273,6 +317,7 @@ Status Viewer::frame() {
   } else if (core_) {
     core_->advance(wall_dt);
   }
+  ui_input_ = ui_input_ || !events.empty();  // kept until a frame draws the UI
   for (const Event& event : events) dispatch(event);
   if (core_)
     for (const Event& event : core_->take_requests()) dispatch(event);
@@ -281,23 +326,37 @@ Status Viewer::frame() {
   if (!window_) {
     TargetImage target{offscreen_->handle(), offscreen_->view(), offscreen_->format(), offscreen_->width(),
                        offscreen_->height()};
+    if (Status s = prepare_frame(target.width, target.height); !s) return s;
+    parts_.lap(FramePart::render);
+    build_ui(target.width, target.height);
     if (Status s = render_into(target); !s) return s;
     parts_.lap(FramePart::render);
-    return finish_ui(target, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+    return submit_ui(target, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
   }
 
   int width = 0, height = 0;
   window_->framebuffer_size(width, height);
   if (width == 0 || height == 0) {  // minimized: no swapchain images to draw into
+    if (Status s = present_pending(); !s) return s;
     glfwWaitEventsTimeout(0.02);
     return {};
   }
   if (swapchain_stale_ || std::uint32_t(width) != swapchain_->width() || std::uint32_t(height) != swapchain_->height()) {
+    if (Status s = present_pending(); !s) return s;
     ui_pass_->forget_framebuffers();
     if (Status s = swapchain_->recreate(std::uint32_t(width), std::uint32_t(height)); !s) return s;
     swapchain_stale_ = false;
   }
   display_width_ = swapchain_->width(), display_height_ = swapchain_->height();
+  // The previous frame is presented only now, after this frame's CPU work: on a software
+  // swapchain vkQueuePresentKHR waits for the device to finish that frame, so the work above
+  // overlaps it. Nothing of this frame is submitted yet (the present's own submission would
+  // wait for it).
+  if (Status s = prepare_frame(display_width_, display_height_); !s) return s;
+  parts_.lap(FramePart::render);
+  build_ui(display_width_, display_height_);
+  if (Status s = present_pending(); !s) return s;
+  if (swapchain_stale_) return {};  // rebuilt next frame
   auto acquired = swapchain_->acquire();
   if (!acquired) return acquired.error();
   if (!*acquired) {  // out of date: rebuild next frame
@@ -309,11 +368,19 @@ Status Viewer::frame() {
   parts_.lap(FramePart::acquire);
   if (Status s = render_into(target); !s) return s;
   parts_.lap(FramePart::render);
-  if (Status s = finish_ui(target, swapchain_->render_done(index), VK_IMAGE_LAYOUT_PRESENT_SRC_KHR); !s) return s;
-  auto presented = swapchain_->present(index, swapchain_->render_done(index));
+  if (Status s = submit_ui(target, swapchain_->render_done(index), VK_IMAGE_LAYOUT_PRESENT_SRC_KHR); !s) return s;
+  pending_present_ = PendingPresent{index, (*acquired)->stale};
+  return {};
+}
+
+Status Viewer::present_pending() {
+  if (!pending_present_) return {};
+  const PendingPresent pending = *pending_present_;
+  pending_present_.reset();
+  auto presented = swapchain_->present(pending.index, swapchain_->render_done(pending.index));
   if (!presented) return presented.error();
   parts_.lap(FramePart::present);
-  if (!*presented || (*acquired)->stale) swapchain_stale_ = true;
+  if (!*presented || pending.stale) swapchain_stale_ = true;
   return {};
 }
 

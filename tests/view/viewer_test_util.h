@@ -6,6 +6,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -36,9 +37,11 @@ inline std::filesystem::path output_dir(const std::string& test) {
   return dir;
 }
 
-// Runs `proxygi view` with `script_json`; screenshots are captured, not written.
+// Runs `proxygi view` with `script_json`; screenshots are captured, not written. `adjust`
+// changes further options.
 inline ViewerRun run_viewer_script(const std::string& script_json, const std::string& open, int width, int height,
-                                   bool offscreen, const std::string& test) {
+                                   bool offscreen, const std::string& test,
+                                   const std::function<void(ViewerOptions&)>& adjust = nullptr) {
   ViewerRun run;
   ViewerOptions options;
   options.open = open;
@@ -55,6 +58,7 @@ inline ViewerRun run_viewer_script(const std::string& script_json, const std::st
     run.shots[path.string()] = Shot{{rgba.begin(), rgba.end()}, w, h};
     return Status{};
   };
+  if (adjust) adjust(options);
   run.status = view::run_viewer(options);
   std::ifstream in(options.state_out);
   if (in) run.state = nlohmann::json::parse(in, nullptr, false);
