@@ -2,6 +2,8 @@
 
 #include <vector>
 
+#include "base/check.h"
+#include "gpu/transfer.h"
 #include "shaders/shared/layouts.h"
 
 namespace proxygi::gpu {
@@ -58,6 +60,33 @@ VkRenderingAttachmentInfo attachment_info(const Image& image, VkImageLayout layo
   info.loadOp = load;
   info.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
   return info;
+}
+
+void begin_cleared_rendering(VkCommandBuffer commands, std::span<const Image* const> colors, const Image& depth,
+                             std::uint32_t width, std::uint32_t height) {
+  VkRenderingAttachmentInfo color_attachments[4];
+  PROXYGI_CHECK(colors.size() <= std::size(color_attachments), "at most 4 colour targets");
+  for (std::size_t i = 0; i < colors.size(); ++i) {
+    transition(commands, *colors[i], VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+    color_attachments[i] = attachment_info(*colors[i], VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_ATTACHMENT_LOAD_OP_CLEAR);
+    color_attachments[i].clearValue.color = {{0.0f, 0.0f, 0.0f, 0.0f}};
+  }
+  transition(commands, depth, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
+  VkRenderingAttachmentInfo depth_attachment =
+      attachment_info(depth, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_ATTACHMENT_LOAD_OP_CLEAR);
+  depth_attachment.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  depth_attachment.clearValue.depthStencil = {1.0f, 0};
+  VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+  rendering.renderArea = {{0, 0}, {width, height}};
+  rendering.layerCount = 1;
+  rendering.colorAttachmentCount = std::uint32_t(colors.size());
+  rendering.pColorAttachments = color_attachments;
+  rendering.pDepthAttachment = &depth_attachment;
+  vkCmdBeginRendering(commands, &rendering);
+  const VkViewport viewport{0, 0, float(width), float(height), 0, 1};
+  const VkRect2D scissor{{0, 0}, {width, height}};
+  vkCmdSetViewport(commands, 0, 1, &viewport);
+  vkCmdSetScissor(commands, 0, 1, &scissor);
 }
 
 std::string order_variant(const std::string& shader, int order) { return shader + ":order" + std::to_string(order); }

@@ -48,6 +48,13 @@ void dispatch_grid(VkCommandBuffer commands, std::uint32_t width, std::uint32_t 
 // A dynamic-rendering attachment of the whole image, stored after the pass.
 VkRenderingAttachmentInfo attachment_info(const Image& image, VkImageLayout layout, VkAttachmentLoadOp load);
 
+// Begins dynamic rendering into up to 4 colour targets and a depth target, all of extent
+// width × height: the images move from UNDEFINED (their old contents are not kept), colours are
+// cleared to 0 (a 0 in .w marks "nothing drawn here" to the readers), depth to 1 and not stored;
+// viewport and scissor cover the whole extent. The caller ends the rendering.
+void begin_cleared_rendering(VkCommandBuffer commands, std::span<const Image* const> colors, const Image& depth,
+                             std::uint32_t width, std::uint32_t height);
+
 // Embedded shader names of the order- and operator-dependent variants.
 std::string order_variant(const std::string& shader, int order);  // "shadow_gather.comp:order4"
 

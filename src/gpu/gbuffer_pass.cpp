@@ -64,28 +64,7 @@ std::vector<ResourceAccess> GbufferPass::accesses(const Inputs& in, const Output
 
 void GbufferPass::record(const Context& context, VkCommandBuffer commands, const Inputs& in, const Outputs& out) const {
   const Image* colors[] = {out.position_depth, out.normal, out.albedo};
-  for (const Image* image : colors)
-    transition(commands, *image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
-  transition(commands, *out.depth, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
-  VkRenderingAttachmentInfo color_attachments[3];
-  for (int i = 0; i < 3; ++i) {
-    color_attachments[i] = attachment_info(*colors[i], VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_ATTACHMENT_LOAD_OP_CLEAR);
-    color_attachments[i].clearValue.color = {{0.0f, 0.0f, 0.0f, 0.0f}};
-  }
-  VkRenderingAttachmentInfo depth = attachment_info(*out.depth, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_ATTACHMENT_LOAD_OP_CLEAR);
-  depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  depth.clearValue.depthStencil = {1.0f, 0};
-  VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-  rendering.renderArea = {{0, 0}, {in.width, in.height}};
-  rendering.layerCount = 1;
-  rendering.colorAttachmentCount = 3;
-  rendering.pColorAttachments = color_attachments;
-  rendering.pDepthAttachment = &depth;
-  vkCmdBeginRendering(commands, &rendering);
-  const VkViewport viewport{0, 0, float(in.width), float(in.height), 0, 1};
-  const VkRect2D scissor{{0, 0}, {in.width, in.height}};
-  vkCmdSetViewport(commands, 0, 1, &viewport);
-  vkCmdSetScissor(commands, 0, 1, &scissor);
+  begin_cleared_rendering(commands, colors, *out.depth, in.width, in.height);
 
   // Each draw's first receiver (vertex method) follows the draws' order, whatever order they
   // are recorded in.

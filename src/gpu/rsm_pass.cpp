@@ -61,29 +61,8 @@ std::vector<ResourceAccess> RsmPass::accesses(const Inputs& in, const Outputs& o
 }
 
 void RsmPass::record(const Context& context, VkCommandBuffer commands, const Inputs& in, const Outputs& out) const {
-  const Image* colors[] = {out.position, out.normal, out.flux};
-  for (const Image* image : colors)
-    transition(commands, *image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
-  transition(commands, *out.depth, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
-  VkRenderingAttachmentInfo color_attachments[3];
-  for (int i = 0; i < 3; ++i) {
-    color_attachments[i] = attachment_info(*colors[i], VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_ATTACHMENT_LOAD_OP_CLEAR);
-    color_attachments[i].clearValue.color = {{0.0f, 0.0f, 0.0f, 0.0f}};  // position.w 0: no sender
-  }
-  VkRenderingAttachmentInfo depth = attachment_info(*out.depth, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_ATTACHMENT_LOAD_OP_CLEAR);
-  depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  depth.clearValue.depthStencil = {1.0f, 0};
-  VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-  rendering.renderArea = {{0, 0}, {kRsmSize, kRsmSize}};
-  rendering.layerCount = 1;
-  rendering.colorAttachmentCount = 3;
-  rendering.pColorAttachments = color_attachments;
-  rendering.pDepthAttachment = &depth;
-  vkCmdBeginRendering(commands, &rendering);
-  const VkViewport viewport{0, 0, float(kRsmSize), float(kRsmSize), 0, 1};
-  const VkRect2D scissor{{0, 0}, {kRsmSize, kRsmSize}};
-  vkCmdSetViewport(commands, 0, 1, &viewport);
-  vkCmdSetScissor(commands, 0, 1, &scissor);
+  const Image* colors[] = {out.position, out.normal, out.flux};  // position.w 0: no sender
+  begin_cleared_rendering(commands, colors, *out.depth, kRsmSize, kRsmSize);
   raster_.bind(commands);
   const auto ranges = vsgl_light_ranges(in.draws, in.lights_per_sender);
   for (const VsglLightRange& range : ranges) {

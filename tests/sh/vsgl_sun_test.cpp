@@ -13,6 +13,7 @@
 #include "sh/convolution.h"
 #include "sh/environment.h"
 #include "sh/spherical_gaussian.h"
+#include "tests/sh/vsgl_lobe_bound.h"
 #include "sh/vsgl_sun.h"
 
 namespace proxygi::sh {
@@ -118,13 +119,7 @@ TEST(VsglSun, SunBelowTheHorizonAddsNothing) {
 TEST(VsglSun, OneLightPerTexelEqualsBruteForceGathering) {
   // K = number of texels: as Vsgl.OneLightPerVplEqualsBruteForceGathering (sh/vsgl_test.cpp),
   // the only approximation is the pair of clamped cosines replaced by eq. 1's lobe (bound e).
-  double e = 0.0;
-  for (int k = 0; k <= 20000; ++k) {
-    const double c = std::cos(kPi * k / 20000.0);
-    e = std::max(e, std::abs(std::max(c, 0.0) / kPi -
-                             std::exp(kDiffuseLobeSharpness * (c - 1.0)) / sg_area(kDiffuseLobeSharpness)));
-  }
-  const double pair_bound = e * (1.0 / sg_area(kDiffuseLobeSharpness) + 1.0 / kPi);
+  const double pair_bound = testing::diffuse_lobe_pair_bound();
   const SunLight sun = test_sun();
   const glm::dvec3 center(0.0, 1.0, 0.0);
   const RsmView view = fit_rsm_view(sun.direction, center - 0.3, center + 0.3, 16, 0.02);

@@ -10,6 +10,7 @@
 
 #include "sh/quadrature.h"
 #include "sh/spherical_gaussian.h"
+#include "tests/sh/vsgl_lobe_bound.h"
 #include "sh/vsgl.h"
 
 namespace proxygi::sh {
@@ -146,13 +147,7 @@ TEST(Vsgl, OneLightPerVplEqualsBruteForceGathering) {
   // irradiance is π Φ/r² · (g_i g_p) instead of π Φ/r² · (c_i c_p) with c = max(cos, 0)/π and
   // g = G/A(λ_d); |g_i g_p − c_i c_p| ≤ e (1/A(λ_d) + 1/π), e = max |g − c| over the angle. The
   // floor adds O(λ_d/λ_σ) = 2e-6 relative (1e-5 allowed).
-  double e = 0.0;
-  for (int k = 0; k <= 20000; ++k) {
-    const double c = std::cos(kPi * k / 20000.0);
-    e = std::max(e, std::abs(std::max(c, 0.0) / kPi -
-                             std::exp(kDiffuseLobeSharpness * (c - 1.0)) / sg_area(kDiffuseLobeSharpness)));
-  }
-  const double pair_bound = e * (1.0 / sg_area(kDiffuseLobeSharpness) + 1.0 / kPi);
+  const double pair_bound = testing::diffuse_lobe_pair_bound();
   const auto lights = random_lights(60, 4);
   std::vector<Vsgl> vsgls;
   for (const auto& v : lights) vsgls.push_back(*fit_vsgl(sums_of({v}, v.position), v.position));
