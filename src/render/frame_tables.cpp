@@ -1,6 +1,7 @@
 #include "render/frame_tables.h"
 
 #include <algorithm>
+#include <array>
 
 #include "base/check.h"
 #include "image/image.h"
@@ -12,6 +13,27 @@
 #include "sh/vsgl_sun.h"
 
 namespace proxygi::render {
+namespace {
+
+// The frame's lighting coefficients: the first order² of `coefficients` (zero beyond its size),
+// ringing-windowed when the settings ask (the window scales each band: linear, per coefficient).
+std::vector<double> frame_coefficients(int order, bool window, const std::vector<double>& coefficients) {
+  std::vector<double> out(std::size_t(order * order), 0.0);
+  std::copy_n(coefficients.begin(), std::min(out.size(), coefficients.size()), out.begin());
+  if (window) sh::apply_ringing_window(order, out);
+  return out;
+}
+
+// Unshadowed irradiance at order 3 (the clamped cosine convolved) of a frame's coefficients.
+std::array<float, 9> order3_irradiance(const std::vector<double>& coefficients, const std::vector<double>& cosine) {
+  std::vector<double> irradiance(coefficients.begin(), coefficients.begin() + 9);
+  sh::convolve_zonal(3, cosine, irradiance);
+  std::array<float, 9> out{};
+  for (int i = 0; i < 9; ++i) out[std::size_t(i)] = float(irradiance[std::size_t(i)]);
+  return out;
+}
+
+}  // namespace
 
 int lighting_cube_set(const glm::vec3& p) {
   return p.y > gpu_layout::kGroundBounceMinHeight ? int(gpu_layout::kGroundLitCubes) : 0;
@@ -27,12 +49,9 @@ FrameTables make_frame_tables(const sh::RgbSh& lighting, const settings::RenderS
   tables.resolution = resolution;
   const int count = order * order;
   tables.lighting.order = order;
-  for (int channel = 0; channel < 3; ++channel) {
-    auto& coefficients = tables.lighting.channels[std::size_t(channel)];
-    coefficients.assign(lighting.channels[std::size_t(channel)].begin(),
-                        lighting.channels[std::size_t(channel)].begin() + count);
-    if (settings.sh_window) sh::apply_ringing_window(order, coefficients);
-  }
+  for (int channel = 0; channel < 3; ++channel)
+    tables.lighting.channels[std::size_t(channel)] =
+        frame_coefficients(order, settings.sh_window, lighting.channels[std::size_t(channel)]);
 
   tables.shadow_eta = settings.shadow_eta;
   if (settings.shadow_eta == settings::kEtaFromLighting) {
@@ -69,12 +88,8 @@ FrameTables make_frame_tables(const sh::RgbSh& lighting, const settings::RenderS
   }
 
   const std::vector<double> cosine = sh::clamped_cosine_zonal(3);
-  for (int channel = 0; channel < 3; ++channel) {
-    std::vector<double> irradiance(tables.lighting.channels[std::size_t(channel)].begin(),
-                                   tables.lighting.channels[std::size_t(channel)].begin() + 9);
-    sh::convolve_zonal(3, cosine, irradiance);
-    for (int i = 0; i < 9; ++i) tables.irradiance_order3[std::size_t(channel)][std::size_t(i)] = float(irradiance[std::size_t(i)]);
-  }
+  for (int channel = 0; channel < 3; ++channel)
+    tables.irradiance_order3[std::size_t(channel)] = order3_irradiance(tables.lighting.channels[std::size_t(channel)], cosine);
 
   tables.vsgl_sender_order3 = tables.irradiance_order3;
   const sh::SunLight sun_light{glm::dvec3(sun.direction), glm::dvec3(sun.irradiance)};
@@ -84,19 +99,14 @@ FrameTables make_frame_tables(const sh::RgbSh& lighting, const settings::RenderS
     tables.sun_direction = sun.direction;
     tables.sun_irradiance = sun.irradiance;
     for (int channel = 0; channel < 3; ++channel) {
-      // L̃ of the windowed (lighting − L_sun): the window and the convolution are linear.
+      // L̃ of the windowed (lighting − L_sun), from its first 9 coefficients: the window and the
+      // convolution are linear and per band.
       std::vector<double> rest(9);
       for (int i = 0; i < 9; ++i)
         rest[std::size_t(i)] = lighting.channels[std::size_t(channel)][std::size_t(i)] -
                                sun.lighting.channels[std::size_t(channel)][std::size_t(i)];
-      if (settings.sh_window) {
-        std::vector<double> windowed(std::size_t(count), 0.0);
-        std::copy(rest.begin(), rest.end(), windowed.begin());
-        sh::apply_ringing_window(order, windowed);
-        rest.assign(windowed.begin(), windowed.begin() + 9);
-      }
-      sh::convolve_zonal(3, cosine, rest);
-      for (int i = 0; i < 9; ++i) tables.vsgl_sender_order3[std::size_t(channel)][std::size_t(i)] = float(rest[std::size_t(i)]);
+      tables.vsgl_sender_order3[std::size_t(channel)] =
+          order3_irradiance(frame_coefficients(order, settings.sh_window, rest), cosine);
     }
   }
   return tables;
