@@ -41,6 +41,36 @@ std::vector<PixelRect> touched_rects(const ImDrawData& draw_data) {
 
 namespace {
 
+// A framebuffer of one colour view for `render_pass` (the target's or the overlay's).
+Result<VkFramebuffer> make_framebuffer(VkDevice device, VkRenderPass render_pass, VkImageView view, std::uint32_t width,
+                                       std::uint32_t height) {
+  VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+  info.renderPass = render_pass;
+  info.attachmentCount = 1;
+  info.pAttachments = &view;
+  info.width = width;
+  info.height = height;
+  info.layers = 1;
+  VkFramebuffer framebuffer = VK_NULL_HANDLE;
+  PROXYGI_VK_TRY(vkCreateFramebuffer(device, &info, nullptr, &framebuffer));
+  return framebuffer;
+}
+
+// ImGui's draw lists in one render pass over the whole framebuffer; `clear` for a pass that
+// clears (the overlay), null for one that loads (the target).
+void record_imgui(VkCommandBuffer commands, VkRenderPass render_pass, VkFramebuffer framebuffer, std::uint32_t width,
+                  std::uint32_t height, ImDrawData* draw_data, const VkClearValue* clear) {
+  VkRenderPassBeginInfo pass{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+  pass.renderPass = render_pass;
+  pass.framebuffer = framebuffer;
+  pass.renderArea.extent = {width, height};
+  pass.clearValueCount = clear ? 1 : 0;
+  pass.pClearValues = clear;
+  vkCmdBeginRenderPass(commands, &pass, VK_SUBPASS_CONTENTS_INLINE);
+  if (draw_data && draw_data->CmdListsCount > 0) ImGui_ImplVulkan_RenderDrawData(draw_data, commands);
+  vkCmdEndRenderPass(commands);
+}
+
 template <typename T>
 void append(std::vector<std::uint8_t>& out, const T& value) {
   const auto* bytes = reinterpret_cast<const std::uint8_t*>(&value);
@@ -197,31 +227,17 @@ Status UiPass::make_overlay(const TargetImage& target) {
                                   VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT);
   if (!image) return image.error();
   overlay_ = std::move(*image);
-  VkImageView view = overlay_->view();
-  VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-  info.renderPass = overlay_render_pass_;
-  info.attachmentCount = 1;
-  info.pAttachments = &view;
-  info.width = target.width;
-  info.height = target.height;
-  info.layers = 1;
-  PROXYGI_VK_TRY(vkCreateFramebuffer(context_.device(), &info, nullptr, &overlay_framebuffer_));
+  auto framebuffer = make_framebuffer(context_.device(), overlay_render_pass_, overlay_->view(), target.width, target.height);
+  if (!framebuffer) return framebuffer.error();
+  overlay_framebuffer_ = *framebuffer;
   return {};
 }
 
 // Overlay (drawn again or as it is) blended over the frame, then the target to the final layout.
 void UiPass::record_overlay(const TargetImage& target, ImDrawData* draw_data, UiDraw how, VkImageLayout final_layout) {
   if (how == UiDraw::redraw_overlay) {
-    VkClearValue clear{};  // transparent black
-    VkRenderPassBeginInfo pass{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-    pass.renderPass = overlay_render_pass_;
-    pass.framebuffer = overlay_framebuffer_;
-    pass.renderArea.extent = {target.width, target.height};
-    pass.clearValueCount = 1;
-    pass.pClearValues = &clear;
-    vkCmdBeginRenderPass(commands_, &pass, VK_SUBPASS_CONTENTS_INLINE);
-    if (draw_data->CmdListsCount > 0) ImGui_ImplVulkan_RenderDrawData(draw_data, commands_);
-    vkCmdEndRenderPass(commands_);
+    const VkClearValue clear{};  // transparent black
+    record_imgui(commands_, overlay_render_pass_, overlay_framebuffer_, target.width, target.height, draw_data, &clear);
     VkImageMemoryBarrier readable{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
     readable.srcQueueFamilyIndex = readable.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     readable.image = overlay_->handle();
@@ -255,17 +271,10 @@ void UiPass::record_overlay(const TargetImage& target, ImDrawData* draw_data, Ui
 
 Result<VkFramebuffer> UiPass::framebuffer(const TargetImage& target) {
   if (auto found = framebuffers_.find(target.view); found != framebuffers_.end()) return found->second;
-  VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-  info.renderPass = render_pass_;
-  info.attachmentCount = 1;
-  info.pAttachments = &target.view;
-  info.width = target.width;
-  info.height = target.height;
-  info.layers = 1;
-  VkFramebuffer framebuffer = VK_NULL_HANDLE;
-  PROXYGI_VK_TRY(vkCreateFramebuffer(context_.device(), &info, nullptr, &framebuffer));
-  framebuffers_[target.view] = framebuffer;
-  return framebuffer;
+  auto framebuffer = make_framebuffer(context_.device(), render_pass_, target.view, target.width, target.height);
+  if (!framebuffer) return framebuffer.error();
+  framebuffers_[target.view] = *framebuffer;
+  return *framebuffer;
 }
 
 Status UiPass::wait() {
@@ -294,13 +303,7 @@ Status UiPass::submit(const TargetImage& target, ImDrawData* draw_data, UiDraw h
   if (cached) {
     record_overlay(target, draw_data, how, final_layout_);
   } else {
-    VkRenderPassBeginInfo pass{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-    pass.renderPass = render_pass_;
-    pass.framebuffer = *framebuffer_handle;
-    pass.renderArea.extent = {target.width, target.height};
-    vkCmdBeginRenderPass(commands_, &pass, VK_SUBPASS_CONTENTS_INLINE);
-    if (draw_data && draw_data->CmdListsCount > 0) ImGui_ImplVulkan_RenderDrawData(draw_data, commands_);
-    vkCmdEndRenderPass(commands_);
+    record_imgui(commands_, render_pass_, *framebuffer_handle, target.width, target.height, draw_data, nullptr);
   }
   context_.end_label(commands_);
   PROXYGI_VK_TRY(vkEndCommandBuffer(commands_));
