@@ -27,6 +27,9 @@ struct FitArgs {
   int max_spheres = proxies::FitOptions{}.max_spheres;
   bool json = false;
   bool force = false;
+  // Study options (need -o: a cache is keyed by tolerance and cap only).
+  proxies::FitOptions study;
+  bool studied = false;
 };
 
 nlohmann::json report_json(const proxies::ProxyRig& rig, const std::string& model, const std::string& rig_path, bool cached) {
@@ -72,6 +75,8 @@ void print_text(const proxies::ProxyRig& rig, const std::string& rig_path, bool 
 int run_fit(const FitArgs& args) {
   if (!args.output.empty() && !args.output.ends_with(".json"))
     return fail_bad_input("-o '" + args.output + "': a rig is written as JSON; name it *.proxies.json");
+  if (args.studied && args.output.empty())
+    return fail_bad_input("--surface-slack, --outside-target and --teleport-* change the fit: give -o FILE.proxies.json");
   Result<ModelInput> model = open_model(args.model);
   if (!model) return fail_bad_input(model.message());
   const anim::Character& character = model->character;
@@ -88,9 +93,10 @@ int run_fit(const FitArgs& args) {
   request.fallback = args.output.empty();  // -o FILE: that file or nothing
   request.model_name = model->mannequin ? "mannequin.glb" : model->file.filename().string();
   request.model_hash = model->hash;
+  request.options = args.study;
   request.options.tolerance = args.tolerance;
   request.options.max_spheres = args.max_spheres;
-  request.force = args.force;
+  request.force = args.force || args.studied;
   Result<proxies::ObtainedRig> obtained = proxies::load_or_fit_rig(character, request);
   if (!obtained) return fail_bad_input(obtained.message() + " (fix the file or pass --force to refit)");
   for (const std::string& warning : obtained->warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
@@ -118,6 +124,18 @@ void add_fit_command(CLI::App& app, CommandRunner& runner) {
       ->check(CLI::Range(0.0001f, 1.0f));
   command->add_option("--max-spheres", args->max_spheres, "cap on the sphere count, at most 4096 (settings/limits.h)")
       ->check(CLI::Range(1, settings::kMaxProxySpheres));
+  const proxies::FitOptions defaults;
+  auto study = [&](CLI::Option* option) { option->each([args](const std::string&) { args->studied = true; }); };
+  study(command->add_option("--surface-slack", args->study.surface_slack, "study: how far a point may lie outside its sphere, x tolerance, in [0, 0.99] (default " + std::to_string(defaults.surface_slack) + "; needs -o)")
+            ->check(CLI::Range(0.0f, 0.99f)));
+  study(command->add_option("--outside-target", args->study.outside_target, "study: split while the outside volume share exceeds it, in [0, 1] (1: no outside-volume splits; needs -o)")
+            ->check(CLI::Range(0.0f, 1.0f)));
+  study(command->add_option("--teleport-rounds", args->study.teleport_rounds, "study: cap on teleport moves, 0: none (needs -o)")
+            ->check(CLI::Range(0, 4096)));
+  study(command->add_option("--teleport-candidates", args->study.teleport_candidates, "study: splits tried per teleport move (needs -o)")
+            ->check(CLI::Range(1, 64)));
+  study(command->add_option("--teleport-worsening", args->study.teleport_worsening, "study: worsening teleport moves allowed in a row (needs -o)")
+            ->check(CLI::Range(0, 64)));
   command->add_flag("--json", args->json, "print the report as JSON on stdout");
   command->add_flag("--force", args->force, "refit even when the cached rig matches");
   add_quiet_flag(*command);

@@ -9,6 +9,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "proxies/sphere_set_fit.h"
+#include "proxies/teleport.h"
 
 namespace proxygi::proxies {
 namespace {
@@ -49,53 +50,6 @@ glm::vec3 principal_extents(std::span<const glm::vec3> points, const std::vector
   return extents;
 }
 
-// VSSA's teleport over the whole character: split the sphere with the largest outside volume
-// and drop the sphere whose removal costs least, while that lowers the summed outside volume
-// and keeps every protrusion within max(tolerance, the worst before). Deterministic: ties go to
-// the lower set and sphere index.
-void teleport(std::vector<std::unique_ptr<BoneSphereSet>>& sets, float tau, const FitOptions& options) {
-  const int lloyd = options.lloyd_iterations;
-  for (int round = 0; round < options.teleport_rounds; ++round) {
-    float worst_all = 0.0f;
-    for (const auto& set : sets) worst_all = std::max(worst_all, set->worst_protrusion());
-    const float allowed = std::max(tau, worst_all);
-    // The split: the splittable sphere with the largest outside volume.
-    int split_set = -1, split_sphere = -1;
-    float split_outside = 0.0f;
-    for (std::size_t i = 0; i < sets.size(); ++i) {
-      const int w = sets[i]->worst();
-      if (w < 0) continue;
-      for (std::size_t j = 0; j < sets[i]->spheres().size(); ++j) {
-        const float o = sets[i]->spheres()[j].outside;
-        if (o > split_outside) split_outside = o, split_set = int(i), split_sphere = int(j);
-      }
-    }
-    if (split_set < 0) return;
-    BoneSphereSet split = *sets[std::size_t(split_set)];
-    if (!split.split(split_sphere, lloyd) || split.worst_protrusion() > allowed) return;
-    const float gain = sets[std::size_t(split_set)]->outside_volume() - split.outside_volume();
-    if (!(gain > 0.0f)) return;
-    // The removal: cheapest over every set of two or more spheres (the split set as split).
-    int remove_set = -1;
-    float best_cost = gain;
-    std::unique_ptr<BoneSphereSet> best;
-    for (std::size_t i = 0; i < sets.size(); ++i) {
-      const BoneSphereSet& base = int(i) == split_set ? split : *sets[i];
-      if (base.spheres().size() < 2) continue;
-      for (std::size_t j = 0; j < base.spheres().size(); ++j) {
-        auto candidate = std::make_unique<BoneSphereSet>(base);
-        candidate->remove(int(j), lloyd);
-        if (candidate->worst_protrusion() > allowed) continue;
-        const float cost = candidate->outside_volume() - base.outside_volume();
-        if (cost < best_cost) best_cost = cost, remove_set = int(i), best = std::move(candidate);
-      }
-    }
-    if (remove_set < 0) return;  // no removal is cheaper than the split gains
-    if (remove_set != split_set) *sets[std::size_t(split_set)] = std::move(split);
-    *sets[std::size_t(remove_set)] = std::move(*best);
-  }
-}
-
 }  // namespace
 
 Status FitProxiesJob::validate() const {
@@ -107,8 +61,10 @@ Status FitProxiesJob::validate() const {
   if (options.surface_samples < 1 || options.interior_samples < 0 || options.grid_resolution < 8 ||
       options.lloyd_iterations < 1)
     return make_error("fit: sample counts, grid resolution (>= 8) or Lloyd iterations out of range");
-  if (!(options.surface_slack >= 0.0f && options.surface_slack < 1.0f) || options.teleport_rounds < 0)
-    return make_error("fit: surface_slack must be in [0, 1) and teleport_rounds >= 0");
+  if (!(options.surface_slack >= 0.0f && options.surface_slack < 1.0f) || options.teleport_rounds < 0 ||
+      options.teleport_candidates < 1 || options.teleport_worsening < 0)
+    return make_error("fit: surface_slack must be in [0, 1), teleport_rounds >= 0, teleport_candidates >= 1 and "
+                      "teleport_worsening >= 0");
   return {};
 }
 
@@ -242,7 +198,15 @@ Status FitProxiesJob::run() const {
     const float before = set.outside_volume();
     if (!set.split(best_sphere, options.lloyd_iterations) || !(set.outside_volume() < before)) ++outside_failures[std::size_t(best_set)];
   }
-  teleport(sets, tau, options);
+  TeleportJob teleport;
+  teleport.sets = sets;
+  teleport.tolerance = tau;
+  teleport.rounds = options.teleport_rounds;
+  teleport.candidates = options.teleport_candidates;
+  teleport.worsening = options.teleport_worsening;
+  teleport.lloyd_iterations = options.lloyd_iterations;
+  teleport.stats = &out.teleport;
+  if (Status s = teleport.run(); !s) return s;
 
   // Rig spheres in bone space, with albedo and mean weights from what each sphere stands for.
   out.rig.tolerance = options.tolerance;

@@ -25,9 +25,11 @@
 //     (coverage, measured at the tolerance, stays whole). Once no protrusion exceeds the
 //     tolerance, the sphere with the largest outside volume is split while the spheres' outside
 //     volume exceeds outside_target of their volume (bones warned flat or open excepted).
-//  5. Teleport (VSSA): while it lowers the summed outside volume, the sphere with the largest
-//     outside volume is split and, to keep the count, the sphere whose removal costs least
-//     (keeping every protrusion within the tolerance) is dropped, each bone re-clustered.
+//  5. Teleport (VSSA; proxies/teleport.h): a sphere is split where the spheres bulge most out of
+//     the mesh and, to keep the count, the sphere whose removal costs least (keeping every
+//     protrusion within max(tolerance, the worst before)) is dropped, each bone re-clustered,
+//     while that lowers the summed outside volume (teleport_candidates splits tried per move,
+//     up to teleport_worsening non-improving moves in a row explored, the best state kept).
 //  6. Per sphere: albedo = mean linear base color of its surface samples; mean skin weights of
 //     its surface samples and vertices (largest four, renormalized); center and radius mapped
 //     to bone space with the bone's bind_to_bone matrix (radius scaled by its largest axis).
@@ -44,6 +46,7 @@
 #include "proxies/bind_surface.h"
 #include "proxies/point_sampling.h"
 #include "proxies/proxy_rig.h"
+#include "proxies/teleport.h"
 
 namespace proxygi::proxies {
 
@@ -59,7 +62,9 @@ struct FitOptions {
   int lloyd_iterations = 6;   // re-clustering passes after each split
   float surface_slack = 0.5f; // how far a point may lie outside its sphere, × tolerance, [0, 1)
   float outside_target = 0.2f;  // split further while the spheres' outside volume share exceeds it
-  int teleport_rounds = 64;   // cap on teleport steps (0: none)
+  int teleport_rounds = 64;   // cap on teleport moves (0: none; proxies/teleport.h)
+  int teleport_candidates = 1;  // splits tried per teleport move (>= 1)
+  int teleport_worsening = 0;   // worsening teleport moves allowed in a row (>= 0)
   std::uint64_t seed = 1;
 };
 
@@ -79,6 +84,7 @@ struct FitResult {
   std::vector<SurfaceSample> samples;  // fitting surface samples
   float diagonal = 0.0f;               // meters
   float tolerance_m = 0.0f;            // tolerance × diagonal
+  TeleportStats teleport;              // what the teleport step did
   double seconds = 0.0;                // wall time of run()
 };
 
