@@ -76,7 +76,7 @@ int run_fit(const FitArgs& args) {
   if (!args.output.empty() && !args.output.ends_with(".json"))
     return fail_bad_input("-o '" + args.output + "': a rig is written as JSON; name it *.proxies.json");
   if (args.studied && args.output.empty())
-    return fail_bad_input("--surface-slack, --outside-target and --teleport-* change the fit: give -o FILE.proxies.json");
+    return fail_bad_input("--surface-slack, --outside-target and --teleport-* change the fit, so they need -o FILE.proxies.json");
   Result<ModelInput> model = open_model(args.model);
   if (!model) return fail_bad_input(model.message());
   const anim::Character& character = model->character;
