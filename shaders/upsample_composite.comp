@@ -12,7 +12,9 @@
 // interpolation of the vertex irradiance, which the G-buffer's second target already holds.
 // The viewer's views (frame.debug_view, layouts.h kDebugView*) show an input instead: the
 // direct and indirect buffers upsampled with the same taps (so they sum to the final frame), the
-// visibility DC, or the shadow pass's per-tile list lengths as a heat map.
+// visibility DC, or the shadow pass's per-tile list lengths as a heat map. They are compiled only
+// into the DEBUG_VIEWS variant ("upsample_composite.comp:views"): lavapipe runs both sides of
+// every branch under a lane mask, so the final frame's pipeline leaves the views' reads out.
 // CPU twins: render::upsample, render::tonemap and image::linear_to_srgb.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
@@ -22,11 +24,13 @@ layout(local_size_x = kFrameLocalSize, local_size_y = kFrameLocalSize) in;
 layout(std140, set = 0, binding = kCompositeBindFrame) uniform Frame { FrameConstants frame; };
 layout(set = 0, binding = kCompositeBindPositionDepth, rgba32f) uniform readonly image2D position_depth_image;
 layout(set = 0, binding = kCompositeBindNormal, rgba32f) uniform readonly image2D normal_image;
-layout(std430, set = 0, binding = kCompositeBindReceivers) readonly buffer Receivers { Receiver receivers[]; };
-layout(std430, set = 0, binding = kCompositeBindShaded) readonly buffer Shaded { vec4 shaded[]; };  // (E, eye depth)
+// The receivers, their shading and the environment are read as texels: lavapipe gathers texels
+// in SIMD vectors, where a storage-buffer read is a loop over the lanes (most of this pass's time).
+layout(set = 0, binding = kCompositeBindReceivers) uniform samplerBuffer receiver_texels;  // layouts.h kReceiverTexels
+layout(set = 0, binding = kCompositeBindShaded) uniform samplerBuffer shaded_texels;  // (E, eye depth)
 layout(std430, set = 0, binding = kCompositeBindIrradiance) writeonly buffer Irradiance { vec4 irradiance[]; };
 layout(set = 0, binding = kCompositeBindAlbedo, rgba32f) uniform readonly image2D albedo_image;
-layout(std430, set = 0, binding = kCompositeBindEnvironment) readonly buffer Environment { vec4 environment[]; };
+layout(set = 0, binding = kCompositeBindEnvironment) uniform samplerBuffer environment_texels;
 layout(std430, set = 0, binding = kCompositeBindHdr) writeonly buffer Hdr { vec4 hdr[]; };
 layout(std430, set = 0, binding = kCompositeBindLdr) writeonly buffer Ldr { uint ldr[]; };
 layout(std430, set = 0, binding = kCompositeBindDirect) readonly buffer Direct { vec4 direct_light[]; };      // (E_direct, w)
@@ -42,7 +46,7 @@ vec3 environment_radiance(vec3 direction) {
   float v = theta / kPi;
   int x = clamp(int(u * float(push.environment_width)), 0, int(push.environment_width) - 1);
   int y = clamp(int(v * float(push.environment_height)), 0, int(push.environment_height) - 1);
-  return environment[y * int(push.environment_width) + x].rgb;
+  return texelFetch(environment_texels, y * int(push.environment_width) + x).rgb;
 }
 
 vec3 tonemap(vec3 radiance) {
@@ -92,7 +96,7 @@ UpsampleTaps upsample_taps(uvec2 pixel, vec3 position, float depth) {
     ivec2 offset = ivec2(tap & 1, tap >> 1);
     ivec2 source = clamp(base + offset, ivec2(0), receiver_size - 1);
     uint index = uint(source.y * receiver_size.x + source.x);
-    vec4 tap_shaded = shaded[index];  // one read for value and depth; the normal only when needed
+    vec4 tap_shaded = texelFetch(shaded_texels, int(index));  // one read for value and depth; the normal only when needed
     float tap_depth = tap_shaded.w;
     taps.used[tap] = tap_depth > 0.0;
     taps.index[tap] = index;
@@ -104,14 +108,16 @@ UpsampleTaps upsample_taps(uvec2 pixel, vec3 position, float depth) {
     float weight = (offset.x == 1 ? fraction.x : 1.0 - fraction.x) * (offset.y == 1 ? fraction.y : 1.0 - fraction.y);
     bilinear_sum += weight;
     if (bilateral) {
-      float facing = max(dot(normal, receivers[index].normal.xyz), 0.0);
+      vec3 tap_position = texelFetch(receiver_texels, int(kReceiverTexels * index)).xyz;
+      vec3 tap_normal = texelFetch(receiver_texels, int(kReceiverTexels * index + 1u)).xyz;
+      float facing = max(dot(normal, tap_normal), 0.0);
       // facing^32 by five squarings: pow() is exp2(32 log2 x), several times dearer on lavapipe.
       facing *= facing;
       facing *= facing;
       facing *= facing;
       facing *= facing;
       facing *= facing;
-      float plane_gap = abs(dot(normal, receivers[index].position_depth.xyz - position)) / depth;
+      float plane_gap = abs(dot(normal, tap_position - position)) / depth;
       float near_plane = epsilon / (epsilon + plane_gap);
       fallback[tap] = weight * near_plane;
       fallback_sum += weight * near_plane;
@@ -152,6 +158,7 @@ vec3 upsample_shaded(UpsampleTaps taps) {
   return total / taps.weight_sum;
 }
 
+#ifdef DEBUG_VIEWS
 // A receiver quantity (kDebugViewDirect: E_direct and its w, kDebugViewIndirect: E_indirect) with the same taps.
 vec4 upsample_buffer(UpsampleTaps taps, uint view) {
   vec4 total = vec4(0.0);
@@ -171,8 +178,10 @@ vec3 heat_color(float t) {
 vec3 nearest_receiver(uvec2 pixel) {
   ivec2 receiver_size = ivec2(frame.receiver_width, frame.receiver_height);
   ivec2 source = clamp(ivec2(pixel) / int(frame.receiver_scale), ivec2(0), receiver_size - 1);
-  return shaded[uint(source.y * receiver_size.x + source.x)].rgb;
+  return texelFetch(shaded_texels, source.y * receiver_size.x + source.x).rgb;
 }
+
+#endif
 
 void main() {
   uvec2 pixel = gl_GlobalInvocationID.xy;
@@ -180,11 +189,14 @@ void main() {
   if (any(greaterThanEqual(pixel, display_size))) return;
   uint index = pixel.y * display_size.x + pixel.x;
   vec4 position_depth = imageLoad(position_depth_image, ivec2(pixel));
+#ifdef DEBUG_VIEWS
   uint view = frame.debug_view;
   bool receiver_views = frame.composite_mode != kCompositeDisplayIrradiance;  // the vertex method has none at display res
+#endif
   vec3 radiance;
   vec3 e = vec3(0.0);
   vec3 albedo = vec3(0.0);
+  vec4 aov = vec4(0.0);  // the irradiance AOV, stored once below (each store is a loop over the lanes)
   UpsampleTaps taps;
   [[unroll]] for (int t = 0; t < 4; ++t) taps.used[t] = false;
   taps.weight_sum = 1.0;
@@ -196,16 +208,17 @@ void main() {
       taps = upsample_taps(pixel, position_depth.xyz, position_depth.w);
       e = upsample_shaded(taps);
     }
-    irradiance[index] = vec4(e, 1.0);
+    aov = vec4(e, 1.0);
     radiance = albedo / kPi * e;
   } else {
-    irradiance[index] = vec4(0.0);
     vec2 ndc = (vec2(pixel) + 0.5) / vec2(display_size) * 2.0 - 1.0;
     vec4 far_point = frame.inverse_view_projection * vec4(ndc, 1.0, 1.0);
     vec3 direction = normalize(far_point.xyz / far_point.w - frame.eye_position.xyz);
     radiance = environment_radiance(direction);
   }
+  irradiance[index] = aov;
   vec3 display = tonemap(radiance);
+#ifdef DEBUG_VIEWS
   if (view != kDebugViewFinal && position_depth.w > 0.0 && view <= kDebugViewReceivers) {  // the frame's inputs
     if (view == kDebugViewAlbedo) display = albedo;
     else if (view == kDebugViewNormals) display = 0.5 + 0.5 * imageLoad(normal_image, ivec2(pixel)).xyz;
@@ -226,6 +239,7 @@ void main() {
     if (count > 0u) display = mix(display, heat_color(float(count) / float(max(frame.proxy_count, 1u))), 0.65);
     radiance = vec3(float(count));
   }
+#endif
   hdr[index] = vec4(radiance, 1.0);
   uvec3 encoded = uvec3(clamp(vec3(linear_to_srgb(display.r), linear_to_srgb(display.g), linear_to_srgb(display.b)), 0.0, 1.0) * 255.0 + 0.5);
   // In the caller's channel order (an image output of B8G8R8A8: one raw copy lands it).

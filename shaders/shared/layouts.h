@@ -173,6 +173,9 @@ struct Receiver {
   vec4 position_depth;  // xyz world point p, w eye depth (0: no receiver here)
   vec4 normal;          // xyz unit normal N, w unused
 };
+// Read as rgba32f texels (upsample_composite.comp), receiver i is texels kReceiverTexels·i
+// (position_depth) and kReceiverTexels·i + 1 (normal).
+PROXYGI_CONST(uint, kReceiverTexels, 2u);
 
 // ---- VSGL bounce light (render.indirect_method vsgl; sh/vsgl.h is the CPU twin) ----
 // vsgl_lights.comp stage 0: each character draw's triangles (or one of render.vsgl_lights index
@@ -357,7 +360,7 @@ static_assert(sizeof(FrameConstants) == 128 + 16 * 8 + 16 * 27 + 16 * 27 + 128 +
 static_assert(offsetof(FrameConstants, rsm_view_projection) == 256 + 2 * 16 * 27);
 static_assert(offsetof(FrameConstants, display_width) == 160 && offsetof(FrameConstants, irradiance_sh) == 256);
 static_assert(sizeof(GbufferPush) == 64);
-static_assert(sizeof(Receiver) == 32);
+static_assert(sizeof(Receiver) == 32 && sizeof(Receiver) == kReceiverTexels * sizeof(glm::vec4));
 static_assert(sizeof(CompositePush) == 16);
 static_assert(sizeof(SkinPush) == 32);
 static_assert(sizeof(VertexReceiversPush) == 16);

@@ -104,10 +104,15 @@ Status SoftGiFrame::build_targets() {
       {&targets.vsgl_lights, VsglLightsPass::lights_bytes()},
   };
   for (const auto& target : buffers) {
-    auto made = Buffer::create(context_, target.bytes, kStorage, MemoryKind::device_local);
+    auto made = Buffer::create(context_, target.bytes, kStorage | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
+                               MemoryKind::device_local);
     if (!made) return made.error();
     *target.buffer = std::move(*made);
   }
+  // upsample_composite.comp reads its taps as texels (Buffer::add_texel_view says why); a
+  // Receiver is two texels (position_depth, normal).
+  for (Buffer* texels : {&targets.receivers, &targets.shaded})
+    if (Status s = texels->add_texel_view(context_, VK_FORMAT_R32G32B32A32_SFLOAT); !s) return s;
   targets_ = std::move(targets);
   output_staging_ = Image();
   return {};

@@ -232,6 +232,11 @@ DescriptorPush& DescriptorPush::storage_image(std::uint32_t binding, VkImageView
   return *this;
 }
 
+DescriptorPush& DescriptorPush::uniform_texel_buffer(std::uint32_t binding, VkBufferView view) {
+  writes_.push_back({binding, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, {}, {}, view});
+  return *this;
+}
+
 void DescriptorPush::push(const Context& context, VkCommandBuffer commands, const Pipeline& pipeline) const {
   std::vector<VkWriteDescriptorSet> vulkan_writes;
   vulkan_writes.reserve(writes_.size());
@@ -243,6 +248,7 @@ void DescriptorPush::push(const Context& context, VkCommandBuffer commands, cons
     const bool is_buffer =
         write.type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER || write.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
     if (is_buffer) entry.pBufferInfo = &write.buffer;
+    else if (write.type == VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER) entry.pTexelBufferView = &write.texel_view;
     else entry.pImageInfo = &write.image;
     vulkan_writes.push_back(entry);
   }

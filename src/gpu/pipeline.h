@@ -101,6 +101,7 @@ class DescriptorPush {
   DescriptorPush& sampled_image(std::uint32_t binding, VkImageView view, VkSampler sampler,
                                 VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
   DescriptorPush& storage_image(std::uint32_t binding, VkImageView view);
+  DescriptorPush& uniform_texel_buffer(std::uint32_t binding, VkBufferView view);  // Buffer::texel_view()
   void push(const Context& context, VkCommandBuffer commands, const Pipeline& pipeline) const;
 
  private:
@@ -109,6 +110,7 @@ class DescriptorPush {
     VkDescriptorType type;
     VkDescriptorBufferInfo buffer;
     VkDescriptorImageInfo image;
+    VkBufferView texel_view = VK_NULL_HANDLE;
   };
   std::vector<Write> writes_;
 };

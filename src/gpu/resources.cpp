@@ -1,5 +1,6 @@
 #include "gpu/resources.h"
 
+#include <string>
 #include <utility>
 
 #include "gpu/context.h"
@@ -48,8 +49,27 @@ Result<Buffer> Buffer::create(const Context& context, VkDeviceSize size, VkBuffe
   return buffer;
 }
 
+Status Buffer::add_texel_view(const Context& context, VkFormat format) {
+  if (texel_view_ != VK_NULL_HANDLE) return make_error("gpu buffer: texel view added twice");
+  auto bytes = texel_size(format);
+  if (!bytes) return bytes.error();
+  const VkDeviceSize texels = size_ / *bytes;
+  if (texels > context.limits().maxTexelBufferElements)
+    return make_error("gpu buffer: " + std::to_string(texels) + " texels exceed the device's maxTexelBufferElements (" +
+                      std::to_string(context.limits().maxTexelBufferElements) + ")");
+  VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
+  info.buffer = buffer_;
+  info.format = format;
+  info.offset = 0;
+  info.range = texels * *bytes;
+  PROXYGI_VK_TRY(vkCreateBufferView(device_, &info, nullptr, &texel_view_));
+  return {};
+}
+
 void Buffer::release() {
   if (device_ == VK_NULL_HANDLE) return;
+  if (texel_view_ != VK_NULL_HANDLE) vkDestroyBufferView(device_, texel_view_, nullptr);
+  texel_view_ = VK_NULL_HANDLE;
   if (buffer_ != VK_NULL_HANDLE) vkDestroyBuffer(device_, buffer_, nullptr);
   if (memory_ != VK_NULL_HANDLE) vkFreeMemory(device_, memory_, nullptr);  // unmaps implicitly
   device_ = VK_NULL_HANDLE;
@@ -65,6 +85,7 @@ Buffer& Buffer::operator=(Buffer&& other) noexcept {
     release();
     device_ = std::exchange(other.device_, VK_NULL_HANDLE);
     buffer_ = std::exchange(other.buffer_, VK_NULL_HANDLE);
+    texel_view_ = std::exchange(other.texel_view_, VK_NULL_HANDLE);
     memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
     size_ = std::exchange(other.size_, 0);
     mapped_ = std::exchange(other.mapped_, nullptr);

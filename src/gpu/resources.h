@@ -35,10 +35,18 @@ class Buffer {
   void* mapped() const { return mapped_; }
   bool host_visible() const { return mapped_ != nullptr; }
 
+  // Adds a view of the whole buffer as texels of `format` (a uniform texel buffer: the buffer
+  // needs VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT). Shaders on lavapipe read
+  // texels with vector gathers, where a storage-buffer read is a loop over the SIMD lanes.
+  // Fails when the buffer holds more texels than the device's maxTexelBufferElements.
+  Status add_texel_view(const Context& context, VkFormat format);
+  VkBufferView texel_view() const { return texel_view_; }  // VK_NULL_HANDLE until added
+
  private:
   void release();
   VkDevice device_ = VK_NULL_HANDLE;
   VkBuffer buffer_ = VK_NULL_HANDLE;
+  VkBufferView texel_view_ = VK_NULL_HANDLE;
   VkDeviceMemory memory_ = VK_NULL_HANDLE;
   VkDeviceSize size_ = 0;
   void* mapped_ = nullptr;

@@ -51,8 +51,9 @@ Result<std::unique_ptr<SoftGiFrame>> SoftGiFrame::create(Context& context, const
   if (Status s = frame->upload_tables(tables); !s) return s.error();
   auto environment_buffer =
       create_buffer_with_data(context, as_bytes(std::span<const glm::vec4>(environment.pixels)),
-                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+                              VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
   if (!environment_buffer) return environment_buffer.error();
+  if (Status s = environment_buffer->add_texel_view(context, VK_FORMAT_R32G32B32A32_SFLOAT); !s) return s.error();
   frame->environment_ = std::move(*environment_buffer);
   frame->environment_width_ = std::uint32_t(environment.width);
   frame->environment_height_ = std::uint32_t(environment.height);
@@ -100,6 +101,7 @@ Status SoftGiFrame::write_slot(std::uint32_t slot, const FrameView& view, std::s
   constants.eye_position = glm::vec4(view.eye, 1.0f);
   constants.eye_forward = glm::vec4(glm::normalize(view.forward), 0.0f);
   constants.debug_view = view.debug_view;
+  slots_[slot].debug_view = view.debug_view != gpu_layout::kDebugViewFinal;
   // The heat map reads the tile lists of the gather and the AO pass (the raster splat keeps none;
   // the vertex method's receivers are vertices, not screen tiles).
   constants.tile_counts_valid = render.method == settings::ShadingMethod::ambient_occlusion ||
@@ -234,7 +236,7 @@ void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot_index
           UpsampleCompositePass::Inputs{&slot.constants, &t.position_depth, &t.normal, &t.albedo, &t.receivers,
                                         &t.shaded, &t.direct, &t.indirect, &t.tile_counts, &environment_,
                                         environment_width_, environment_height_,
-                                        config_.width, config_.height, ldr_bgra_},
+                                        config_.width, config_.height, ldr_bgra_, slot.debug_view},
           UpsampleCompositePass::Outputs{&t.irradiance, &t.hdr, &t.ldr});
       break;
     case FramePass::skin:

@@ -148,6 +148,7 @@ class SoftGiFrame {
     Buffer hdr_readback;
     std::uint32_t proxy_count = 0;  // instances of the raster splat
     bool rsm = false;               // the sun map is drawn (render.vsgl_sun on, senders' proxies bound it)
+    bool debug_view = false;        // FrameView::debug_view is a view, not the final frame
   };
 
   Context& context_;

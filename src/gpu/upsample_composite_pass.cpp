@@ -10,11 +10,11 @@ Result<UpsampleCompositePass> UpsampleCompositePass::create(const Context& conte
   const ComputeBinding bindings[] = {{kCompositeBindFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
                                      {kCompositeBindPositionDepth, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
                                      {kCompositeBindNormal, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-                                     {kCompositeBindReceivers, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                                     {kCompositeBindShaded, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                     {kCompositeBindReceivers, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER},
+                                     {kCompositeBindShaded, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER},
                                      {kCompositeBindIrradiance, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                                      {kCompositeBindAlbedo, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-                                     {kCompositeBindEnvironment, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                     {kCompositeBindEnvironment, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER},
                                      {kCompositeBindHdr, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                                      {kCompositeBindLdr, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                                      {kCompositeBindDirect, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
@@ -22,8 +22,11 @@ Result<UpsampleCompositePass> UpsampleCompositePass::create(const Context& conte
                                      {kCompositeBindTileCounts, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
   auto pipeline = make_compute_pipeline(context, "upsample_composite.comp", bindings, sizeof(CompositePush));
   if (!pipeline) return pipeline.error();
+  auto views = make_compute_pipeline(context, "upsample_composite.comp:views", bindings, sizeof(CompositePush));
+  if (!views) return views.error();
   UpsampleCompositePass pass;
   pass.pipeline_ = std::move(*pipeline);
+  pass.views_pipeline_ = std::move(*views);
   return pass;
 }
 
@@ -36,24 +39,25 @@ std::vector<ResourceAccess> UpsampleCompositePass::accesses(const Inputs& in, co
 
 void UpsampleCompositePass::record(const Context& context, VkCommandBuffer commands, const Inputs& in,
                                    const Outputs& out) const {
-  pipeline_.bind(commands);
+  const Pipeline& pipeline = in.debug_view ? views_pipeline_ : pipeline_;
+  pipeline.bind(commands);
   DescriptorPush()
       .uniform_buffer(kCompositeBindFrame, *in.constants)
       .storage_image(kCompositeBindPositionDepth, in.position_depth->view())
       .storage_image(kCompositeBindNormal, in.normal->view())
-      .storage_buffer(kCompositeBindReceivers, *in.receivers)
-      .storage_buffer(kCompositeBindShaded, *in.shaded)
+      .uniform_texel_buffer(kCompositeBindReceivers, in.receivers->texel_view())
+      .uniform_texel_buffer(kCompositeBindShaded, in.shaded->texel_view())
       .storage_buffer(kCompositeBindIrradiance, *out.irradiance)
       .storage_image(kCompositeBindAlbedo, in.albedo->view())
-      .storage_buffer(kCompositeBindEnvironment, *in.environment)
+      .uniform_texel_buffer(kCompositeBindEnvironment, in.environment->texel_view())
       .storage_buffer(kCompositeBindHdr, *out.hdr)
       .storage_buffer(kCompositeBindLdr, *out.ldr)
       .storage_buffer(kCompositeBindDirect, *in.direct)
       .storage_buffer(kCompositeBindIndirect, *in.indirect)
       .storage_buffer(kCompositeBindTileCounts, *in.tile_counts)
-      .push(context, commands, pipeline_);
+      .push(context, commands, pipeline);
   const CompositePush push{in.environment_width, in.environment_height, in.ldr_bgra ? 1u : 0u, 0};
-  pipeline_.push_constants(commands, &push, sizeof(push));
+  pipeline.push_constants(commands, &push, sizeof(push));
   dispatch_grid(commands, in.width, in.height);
 }
 

@@ -18,15 +18,16 @@ class UpsampleCompositePass {
     const Image* position_depth = nullptr;  // G-buffer, GENERAL layout
     const Image* normal = nullptr;          // normal (or the vertex method's irradiance)
     const Image* albedo = nullptr;
-    const Buffer* receivers = nullptr;
+    const Buffer* receivers = nullptr;      // read as texels: each needs its texel_view() (rgba32f)
     const Buffer* shaded = nullptr;
     const Buffer* direct = nullptr;         // the views: (E_direct, visibility DC) per receiver
     const Buffer* indirect = nullptr;       // (E_indirect, ω) per receiver
     const Buffer* tile_counts = nullptr;    // the heat map: uint per 8×8-receiver tile
-    const Buffer* environment = nullptr;    // equirectangular vec4 radiance
+    const Buffer* environment = nullptr;    // equirectangular vec4 radiance (texels too)
     std::uint32_t environment_width = 0, environment_height = 0;
     std::uint32_t width = 0, height = 0;    // display
     bool ldr_bgra = false;                  // the 8-bit frame in B8G8R8A8 byte order
+    bool debug_view = false;                // frame.debug_view is not kDebugViewFinal: the views' pipeline
   };
   struct Outputs {
     const Buffer* irradiance = nullptr;  // vec4 per display pixel (AOV)
@@ -40,7 +41,8 @@ class UpsampleCompositePass {
   void record(const Context& context, VkCommandBuffer commands, const Inputs& in, const Outputs& out) const;
 
  private:
-  Pipeline pipeline_;
+  Pipeline pipeline_;        // the final frame only
+  Pipeline views_pipeline_;  // with the viewer's views ("upsample_composite.comp:views")
 };
 
 }  // namespace proxygi::gpu

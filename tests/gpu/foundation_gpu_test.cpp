@@ -17,6 +17,31 @@ namespace {
 using testing::GpuTest;
 using ComputePatternTest = GpuTest;
 using RasterTriangleTest = GpuTest;
+using TexelViewTest = GpuTest;
+
+// Buffer::add_texel_view: one view over the whole buffer; a second one, or a format without a
+// known texel size, is an error that names the cause, and the first view stays.
+TEST_F(TexelViewTest, AddsOneViewAndRefusesASecond) {
+  auto buffer = Buffer::create(context(), 64 * sizeof(float[4]), VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
+                               MemoryKind::device_local);
+  ASSERT_TRUE(buffer.ok()) << buffer.message();
+  EXPECT_EQ(buffer->texel_view(), VkBufferView(VK_NULL_HANDLE));
+  ASSERT_TRUE(buffer->add_texel_view(context(), VK_FORMAT_R32G32B32A32_SFLOAT).ok());
+  const VkBufferView first = buffer->texel_view();
+  EXPECT_NE(first, VkBufferView(VK_NULL_HANDLE));
+  Status again = buffer->add_texel_view(context(), VK_FORMAT_R32G32B32A32_SFLOAT);
+  ASSERT_FALSE(again.ok());
+  EXPECT_NE(again.message().find("twice"), std::string::npos) << again.message();
+  EXPECT_EQ(buffer->texel_view(), first);
+  Buffer moved = std::move(*buffer);
+  EXPECT_EQ(moved.texel_view(), first);
+
+  auto other = Buffer::create(context(), 256, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT, MemoryKind::device_local);
+  ASSERT_TRUE(other.ok()) << other.message();
+  Status unknown = other->add_texel_view(context(), VK_FORMAT_R8_UNORM);
+  ASSERT_FALSE(unknown.ok());
+  EXPECT_NE(unknown.message().find("VkFormat"), std::string::npos) << unknown.message();
+}
 
 TEST_F(ComputePatternTest, WritesKnownIntegersExactly) {
   constexpr std::uint32_t kCount = 1000;  // not a multiple of the workgroup size on purpose
