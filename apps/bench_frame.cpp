@@ -23,6 +23,7 @@
 #include "world/world.h"
 #include "scene/scene_defaults.h"
 #include "scene/scene_names.h"
+#include "scene/scene_parse.h"
 
 namespace proxygi::app {
 namespace {
@@ -36,8 +37,9 @@ struct BenchOptions {
   std::string indirect_method = "proxy";       // settings::kIndirectMethodNames
   int vsgl_lights = 1;                         // render.vsgl_lights (indirect_method vsgl)
   std::string vsgl_grouping = "vertex_ranges"; // settings::kVsglGroupingNames
-  std::vector<std::string> only;               // empty: every row; else "default", "crowd", "baselines"
-  bool runs(const std::string& part) const { return only.empty() || std::find(only.begin(), only.end(), part) != only.end(); }
+  std::vector<std::string> only;               // empty: every row; else "default", "crowd", "baselines", "prt"
+  bool runs(const std::string& part) const { return only.empty() || asked(part); }
+  bool asked(const std::string& part) const { return std::find(only.begin(), only.end(), part) != only.end(); }
 };
 
 settings::IndirectOperator indirect_operator(const std::string& name) {
@@ -135,6 +137,23 @@ int run_bench_frame(const BenchOptions& options) {
   const settings::RenderSettings default_settings = (*default_world)->scene().render;
   const settings::RenderSettings crowd_settings = (*crowd_world)->scene().render;
   std::vector<ConfigResult> results;
+  // --only prt: the wall corner (assets/scenes/wall_corner.json) at each render.static_transfer,
+  // rows "wc:l0", "wc:ratio", "wc:l1" (the PRT read from its cache, computed on the first run).
+  // Only when asked for: the first run precomputes for tens of seconds.
+  if (options.asked("prt")) {
+    auto corner_scene = scene::load_scene(assets_dir() / "scenes/wall_corner.json");
+    if (!corner_scene) return fail_runtime("bench frame: " + corner_scene.message());
+    auto corner_world = load_world(*corner_scene);
+    if (!corner_world) return fail_runtime("bench frame: wall corner: " + corner_world.message());
+    for (const auto& [level_name, level] : settings::kStaticTransferNames) {
+      settings::RenderSettings corner = corner_scene->render;
+      corner.static_transfer = level;
+      auto result = run_config(**context, "wc:" + std::string(level_name), *corner_world, corner,
+                               corner.receiver_scale, options);
+      if (!result) return fail_runtime("bench frame: wall corner, " + std::string(level_name) + ": " + result.message());
+      results.push_back(*result);
+    }
+  }
   constexpr settings::SplatMethod kSplats[] = {settings::SplatMethod::compute, settings::SplatMethod::raster};
   for (int scale : settings::kReceiverScales)
     for (settings::SplatMethod splat : kSplats) {
@@ -168,8 +187,9 @@ int run_bench_frame(const BenchOptions& options) {
   const settings::SplatMethod default_splat = scene::default_scene().render.splat;
   const std::size_t column = default_splat == settings::SplatMethod::raster ? 1 : 0;  // results: compute, raster pairs
   const bool has_default = options.runs("default");
-  const double k1 = has_default ? results[0 + column].frame_ms : 0.0;
-  const double k4 = has_default ? results[4 + column].frame_ms : 1.0;
+  const std::size_t first_default = options.asked("prt") ? std::size(settings::kStaticTransferNames) : 0;
+  const double k1 = has_default ? results[first_default + 0 + column].frame_ms : 0.0;
+  const double k4 = has_default ? results[first_default + 4 + column].frame_ms : 1.0;
 
   if (options.json) {
     nlohmann::json out;
@@ -261,9 +281,11 @@ void add_bench_frame_command(CLI::App& bench, CommandRunner& runner) {
                                              settings::kVsglLightsPerCharacter.end())));
   command->add_option("--vsgl-grouping", options->vsgl_grouping, "vsgl: vertex_ranges or bone_groups (render.vsgl_grouping)")
       ->check(CLI::IsMember({"vertex_ranges", "bone_groups"}));
-  command->add_option("--only", options->only, "Rows to run (default: all): default, baselines, crowd")
+  command->add_option("--only", options->only,
+                      "Rows to run (default: all but prt): default, baselines, crowd, prt (the wall corner at each "
+                      "render.static_transfer)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"default", "baselines", "crowd"}));
+      ->check(CLI::IsMember({"default", "baselines", "crowd", "prt"}));
   add_device_option(*command, options->device);
   add_quiet_flag(*command);
   command->callback([&runner, options] { runner = [options] { return run_bench_frame(*options); }; });

@@ -14,6 +14,7 @@
 #include "apps/commands.h"
 #include "apps/scene_input.h"
 #include "proxies/rig_cache.h"
+#include "prt/static_frame.h"
 #include "prt/surfaces.h"
 #include "prt/transfer_cache.h"
 #include "settings/render_settings.h"
@@ -41,8 +42,7 @@ bool writable_folder(const std::filesystem::path& dir) {
 
 std::filesystem::path cache_dir(const PrtArgs& args, const scene::Scene& scene) {
   if (!args.cache.empty()) return args.cache;
-  if (!scene.base_dir.empty() && writable_folder(scene.base_dir / "prt-cache")) return scene.base_dir / "prt-cache";
-  return proxies::user_cache_dir() / "prt";
+  return prt::default_cache_dir(scene);  // the frame's rule too (render.static_transfer)
 }
 
 int run_prt(PrtArgs& args) {

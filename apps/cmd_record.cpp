@@ -214,6 +214,8 @@ int run_record(const RecordArgs& args) {
     auto renderer = gpu::SceneRenderer::create(**context, std::shared_ptr<const world::World>(std::move(*world)), scene.render,
                                                std::uint32_t(scene.output.width), std::uint32_t(scene.output.height));
     if (!renderer) return fail_runtime(renderer.message());
+    if (!quiet() && (*renderer)->static_transfer().level != settings::StaticTransfer::l0)
+      std::fprintf(stderr, "record: %s\n", gpu::describe((*renderer)->static_transfer()).c_str());
     progress.emplace(int(plan.frames.size()), plan.skipped, progress_stream);
     const Status rendered = plan.aov ? render_with_aovs(**renderer, plan, *progress)
                                      : render_in_flight(**renderer, plan, *progress);

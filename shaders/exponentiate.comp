@@ -4,11 +4,16 @@
 // ground-lit set for receivers above the ground, lighting_cube_set).
 // E is clamped to [0, E_unshadowed] per channel (ringing, notes F4).
 // Output per receiver: (E_r, E_g, E_b, (O_p)_0). CPU twin: render::exponentiate_and_shade.
+// STATIC_TRANSFER 1 (ratio) or 2 (l1), render.static_transfer: receivers on a PRT triangle take
+// the static-transfer E of static_transfer.glsl instead (CPU twin: prt::static_receiver_direct).
 #extension GL_GOOGLE_include_directive : require
 #include "frame_common.glsl"
 #include "sh/sh_product.glsl"
 
 #define SH_COUNT (SH_ORDER * SH_ORDER)
+#ifndef STATIC_TRANSFER
+#define STATIC_TRANSFER 0
+#endif
 #define SH_JOIN(a, b) a##b
 #define SH_EXPAND_JOIN(a, b) SH_JOIN(a, b)
 #define sh_square SH_EXPAND_JOIN(sh_square_, SH_ORDER)
@@ -20,6 +25,12 @@ layout(std430, set = 0, binding = kExponentiateBindLogOcclusion) readonly buffer
 layout(std430, set = 0, binding = kExponentiateBindOptimalLinear) readonly buffer OptimalLinear { vec2 optimal_linear[]; };  // (a, b) rows
 layout(std430, set = 0, binding = kExponentiateBindLightingCube) readonly buffer LightingCube { float lighting_cube[]; };   // r, g, b cubes, twice
 layout(std430, set = 0, binding = kExponentiateBindDirect) writeonly buffer Direct { vec4 direct[]; };
+#if STATIC_TRANSFER
+layout(std430, set = 0, binding = kExponentiateBindStaticPositions) readonly buffer StaticPositions { vec4 static_positions[]; };
+layout(std430, set = 0, binding = kExponentiateBindStaticTriangles) readonly buffer StaticTriangles { StaticTriangle static_triangles[]; };
+layout(std430, set = 0, binding = kExponentiateBindStaticGrid) readonly buffer StaticGrid { uint static_grid[]; };
+layout(std430, set = 0, binding = kExponentiateBindStaticRecords) readonly buffer StaticRecords { float static_records[]; };
+#endif
 
 vec2 optimal_linear_lookup(float norm) {
   int rows = int(frame.optimal_linear_rows);
@@ -30,6 +41,9 @@ vec2 optimal_linear_lookup(float norm) {
 }
 
 #include "lighting_cube.glsl"
+#if STATIC_TRANSFER
+#include "static_transfer.glsl"
+#endif
 
 void main() {
   uvec2 receiver = gl_GlobalInvocationID.xy;
@@ -47,9 +61,22 @@ void main() {
     f[i] = log_occlusion[index * SH_COUNT + i];
     if (i > 0) norm_squared += f[i] * f[i];
   }
+#if STATIC_TRANSFER
+  StaticHit hit;
+  bool on_static = find_static_hit(r.position_depth.xyz, r.normal.xyz, hit);
+#endif
   if (norm_squared == 0.0 && f[0] == 0.0) {
     // No proxy reaches this receiver: O_p = a(0)·1, so only LH's DC coefficient matters.
     float g0 = optimal_linear_lookup(0.0).x * kSqrtFourPi;
+#if STATIC_TRANSFER
+    if (on_static) {
+      float g_static[SH_COUNT];
+      g_static[0] = g0;
+      for (int i = 1; i < SH_COUNT; ++i) g_static[i] = 0.0;
+      direct[index] = vec4(shade_static_direct(hit, r.normal.xyz, g_static), g0);
+      return;
+    }
+#endif
     int set = lighting_cube_set(r.position_depth.xyz);
     vec3 unshadowed = vec3(lighting_lookup_dc(set, r.normal.xyz), lighting_lookup_dc(set + 1, r.normal.xyz),
                            lighting_lookup_dc(set + 2, r.normal.xyz));
@@ -75,6 +102,12 @@ void main() {
     g = squared;
   }
   for (int i = 0; i < SH_COUNT; ++i) g[i] *= dc;
+#if STATIC_TRANSFER
+  if (on_static) {
+    direct[index] = vec4(shade_static_direct(hit, r.normal.xyz, g), g[0]);
+    return;
+  }
+#endif
 
   vec3 irradiance;
   int set = lighting_cube_set(r.position_depth.xyz);

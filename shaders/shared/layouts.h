@@ -177,6 +177,13 @@ struct Receiver {
 // (position_depth) and kReceiverTexels·i + 1 (normal).
 PROXYGI_CONST(uint, kReceiverTexels, 2u);
 
+// One PRT triangle (prt::StaticTransferField): unit geometric normal on its vertex normals'
+// side (w unused) and its vertices (xyz, w unused).
+struct StaticTriangle {
+  vec4 normal;
+  uvec4 vertices;
+};
+
 // ---- VSGL bounce light (render.indirect_method vsgl; sh/vsgl.h is the CPU twin) ----
 // vsgl_lights.comp stage 0: each character draw's triangles (or one of render.vsgl_lights index
 // ranges of them, each its own light) are diffuse VPLs (centroid, summed vertex normals, area,
@@ -269,6 +276,22 @@ PROXYGI_CONST(uint, kExponentiateBindLogOcclusion, 2u);
 PROXYGI_CONST(uint, kExponentiateBindOptimalLinear, 3u);
 PROXYGI_CONST(uint, kExponentiateBindLightingCube, 4u);
 PROXYGI_CONST(uint, kExponentiateBindDirect, 5u);
+// The static-transfer variants (render.static_transfer ratio, l1; static_transfer.glsl) also read
+// the PRT field (prt/static_field.h): vertex positions, triangles, the lookup grid and the
+// per-vertex records baked for the frame's lighting.
+PROXYGI_CONST(uint, kExponentiateBindStaticPositions, 6u);  // vec4 per vertex: xyz world, m
+PROXYGI_CONST(uint, kExponentiateBindStaticTriangles, 7u);  // StaticTriangle per triangle
+PROXYGI_CONST(uint, kExponentiateBindStaticGrid, 8u);       // uint: header, cell starts, cell triangles
+PROXYGI_CONST(uint, kExponentiateBindStaticRecords, 9u);    // float: prt::static_record_floats per vertex
+// The grid buffer: kStaticGridHeader uints (origin xyz and cell edge as float bits, cells per
+// axis xyz, then 0), the cell starts (cells + 1, offsets into the triangle lists, which start at
+// kStaticGridHeader + cells + 1), then the triangle lists. Cells per axis 0: no static receivers.
+PROXYGI_CONST(uint, kStaticGridHeader, 8u);
+// When a receiver is static (prt::find_static_hit, static_transfer.glsl): within this distance
+// (m) of a PRT triangle's plane, inside it with this barycentric slack, N · n_t above the cosine.
+PROXYGI_CONST(float, kStaticHitDistance, 0.005f);
+PROXYGI_CONST(float, kStaticHitBarycentricSlack, 1e-4f);
+PROXYGI_CONST(float, kStaticHitCosine, 0.5f);
 // indirect.comp (and indirect_exact.glsl)
 PROXYGI_CONST(uint, kIndirectBindFrame, 0u);
 PROXYGI_CONST(uint, kIndirectBindReceivers, 1u);
@@ -356,6 +379,7 @@ PROXYGI_CONST(uint, kResolveBindFirstTarget, 2u);
 #ifdef __cplusplus
 static_assert(sizeof(TestPatternPush) == 16);
 static_assert(sizeof(ProxySphere) == 32);
+static_assert(sizeof(StaticTriangle) == 32);
 static_assert(sizeof(FrameConstants) == 128 + 16 * 8 + 16 * 27 + 16 * 27 + 128 + 32);
 static_assert(offsetof(FrameConstants, rsm_view_projection) == 256 + 2 * 16 * 27);
 static_assert(offsetof(FrameConstants, display_width) == 160 && offsetof(FrameConstants, irradiance_sh) == 256);

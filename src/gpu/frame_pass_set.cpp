@@ -46,7 +46,7 @@ Result<FramePassSet> FramePassSet::create(Context& context, const FrameConfig& c
   }
   if (!uses_raster_splat(config))
     if (Status s = emplace(set.shadow_gather, ShadowGatherPass::create(context, order)); !s) return s.error();
-  if (Status s = emplace(set.exponentiate, ExponentiatePass::create(context, order)); !s) return s.error();
+  if (Status s = emplace(set.exponentiate, ExponentiatePass::create(context, order, render.static_transfer)); !s) return s.error();
   if (Status s = emplace(set.indirect, IndirectPass::create(context, render)); !s) return s.error();
   if (render.indirect_method == settings::IndirectMethod::vsgl)
     if (Status s = emplace(set.vsgl_lights, VsglLightsPass::create(context)); !s) return s.error();

@@ -34,13 +34,14 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Context& context, c
   auto world = world::World::load(scene, world_options);
   if (!world) return world.error();
   return create(context, std::shared_ptr<const world::World>(std::move(*world)), scene.render,
-                std::uint32_t(scene.output.width), std::uint32_t(scene.output.height));
+                std::uint32_t(scene.output.width), std::uint32_t(scene.output.height), 2, options.static_transfer);
 }
 
 Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Context& context, std::shared_ptr<const world::World> world,
                                                              const settings::RenderSettings& settings,
                                                              std::uint32_t width, std::uint32_t height,
-                                                             std::uint32_t frames_in_flight) {
+                                                             std::uint32_t frames_in_flight,
+                                                             const prt::StaticFieldOptions& static_transfer) {
   if (!world) return make_error("scene renderer: no world");
   if (settings.splat == settings::SplatMethod::raster && settings.method != settings::ShadingMethod::image_space)
     log_warning("render.splat: 'raster' splats onto image-space receivers only; this method does not use it");
@@ -68,6 +69,8 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Context& context, s
   auto frame = SoftGiFrame::create(context, *config, *tables, (*environment)->background);
   if (!frame) return frame.error();
   renderer->frame_ = std::move(*frame);
+  renderer->static_options_ = static_transfer;
+  if (Status s = renderer->update_static_transfer(settings, *tables); !s) return s.error();
   return renderer;
 }
 
@@ -138,7 +141,10 @@ Status SceneRenderer::apply_settings(const settings::RenderSettings& settings, s
     if (!made) return made.error();
     tables = std::move(*made);
   }
-  return frame_->apply(*config, tables);
+  if (Status applied = frame_->apply(*config, tables); !applied) return applied;
+  // render.static_transfer needs tables: a new level, order or lighting re-bakes the records.
+  if (needs & settings::kNeedTables) return update_static_transfer(settings, tables);
+  return {};
 }
 
 Result<std::vector<DrawItem>> SceneRenderer::prepare(const FrameRequest& request, std::uint32_t slot) {

@@ -24,6 +24,7 @@
 #include "gpu/material_textures.h"
 #include "gpu/skin_pass.h"
 #include "gpu/soft_gi_frame.h"
+#include "prt/static_frame.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
 #include "world/world.h"
@@ -34,7 +35,24 @@ struct SceneRendererOptions {
   std::filesystem::path assets_dir;  // where assets/mannequin.glb and its rig live
   bool write_rig_cache = true;       // write fitted rigs next to their models
   bool refit = false;                // refit every rig, a scene's own rig file too (world::WorldOptions)
+  prt::StaticFieldOptions static_transfer;  // how render.static_transfer ratio / l1 make the PRT
 };
+
+// The static receivers' PRT the frame uses (render.static_transfer; prt/static_frame.h).
+struct StaticTransferReport {
+  settings::StaticTransfer level = settings::StaticTransfer::l0;
+  bool active = false;           // a PRT field is bound (level ratio or l1, and the scene has static meshes)
+  bool from_cache = false;       // read from `file` (else computed and written there)
+  std::filesystem::path file;
+  double load_seconds = 0.0;     // subdivision, precompute or cache read, lookup grid
+  double bake_ms = 0.0;          // the per-vertex records for the lighting, and their upload
+  std::uint64_t rays = 0;        // traced by the precompute (0 from the cache)
+  std::size_t vertices = 0, triangles = 0;
+  std::size_t cpu_bytes = 0;     // the field (prt::StaticTransferField::bytes)
+  std::size_t gpu_bytes = 0;     // its buffers on the GPU (SoftGiFrame::static_transfer_bytes)
+};
+// One line for summaries: "PRT (render.static_transfer l1): read prt-cache/prt-….bin, 21772 vertices, ...".
+std::string describe(const StaticTransferReport& report);
 
 struct FrameStatistics {
   std::size_t proxies = 0;           // proxies streamed this frame
@@ -94,7 +112,8 @@ class SceneRenderer {
   // regression tracks) with these settings; the world must outlive the renderer.
   static Result<std::unique_ptr<SceneRenderer>> create(Context& context, std::shared_ptr<const world::World> world,
                                                        const settings::RenderSettings& settings, std::uint32_t width,
-                                                       std::uint32_t height, std::uint32_t frames_in_flight = 2);
+                                                       std::uint32_t height, std::uint32_t frames_in_flight = 2,
+                                                       const prt::StaticFieldOptions& static_transfer = {});
   ~SceneRenderer();
 
   // Changes settings and output size in place (waits for frames in flight first).
@@ -126,6 +145,10 @@ class SceneRenderer {
   const FrameConfig& config() const { return frame_->config(); }
   std::size_t proxy_count() const { return world_->proxy_count(); }
   std::size_t frames_in_flight() const;
+  const StaticTransferReport& static_transfer() const { return static_report_; }
+  // The PRT field in use (null when none) and its records for the current lighting (twin tests).
+  const prt::StaticTransferField* static_field() const { return static_field_.get(); }
+  std::span<const float> static_records() const { return static_records_; }
 
  private:
   struct ModelTextures;
@@ -140,6 +163,9 @@ class SceneRenderer {
   Result<std::vector<DrawItem>> prepare(const FrameRequest& request, std::uint32_t slot);
   void record_skinning(VkCommandBuffer commands, std::uint32_t slot) const;
   Status wait_all();
+  // Loads (or drops) the PRT for settings.static_transfer and bakes its records for `tables`
+  // (scene_static_transfer.cpp); the frame must be built for `settings`.
+  Status update_static_transfer(const settings::RenderSettings& settings, const render::FrameTables& tables);
 
   Context& context_;
   std::shared_ptr<const world::World> world_;
@@ -151,6 +177,10 @@ class SceneRenderer {
   std::unique_ptr<SoftGiFrame> frame_;
   std::unique_ptr<SkinPass> skin_pass_;
   world::WorldState state_;  // scratch: the state evaluated for the frame being prepared
+  prt::StaticFieldOptions static_options_;
+  std::shared_ptr<const prt::StaticTransferField> static_field_;  // loaded once per SH order
+  std::vector<float> static_records_;
+  StaticTransferReport static_report_;
 
   struct SlotState {
     Context::InFlight in_flight;

@@ -30,6 +30,9 @@
 namespace proxygi::gpu_layout {
 struct VsglLight;
 }
+namespace proxygi::prt {
+struct StaticTransferField;
+}
 
 namespace proxygi::gpu {
 
@@ -108,6 +111,14 @@ class SoftGiFrame {
   std::uint32_t tiles_y() const;
   // The VSGL lights of the last frame (indirect_method vsgl; gpu_layout::VsglLight each), count first.
   Result<std::vector<gpu_layout::VsglLight>> read_vsgl_lights() const;
+
+  // The static receivers' PRT the static-transfer variants read (render.static_transfer ratio,
+  // l1): `field` packed into the layouts.h buffers with `records` (prt::bake_static_records for
+  // the frame's lighting, one prt::static_record_floats(order) each; order = the frame's SH order).
+  // nullptr: no static receivers (an empty grid). No frame may be in flight. Until it is called
+  // the frame has none.
+  Status set_static_transfer(const prt::StaticTransferField* field, std::span<const float> records);
+  std::size_t static_transfer_bytes() const;  // GPU memory of those buffers
   // G-buffer (display res): xyz world position, a eye depth (0 = background); xyz normal.
   Result<image::ImageF> read_gbuffer_positions() const;
   Result<image::ImageF> read_gbuffer_normals() const;
@@ -120,6 +131,9 @@ class SoftGiFrame {
     Buffer tile_counts;  // uint per 8×8-receiver tile (tile_count()), the shadow pass's list lengths
     Buffer vsgl_partials, vsgl_lights;  // VsglLightsPass outputs (small: allocated for every method)
     Image rsm_position, rsm_normal, rsm_flux, rsm_depth;  // RsmPass outputs (kRsmSize², every method)
+  };
+  struct StaticTransfer {
+    Buffer positions, triangles, grid, records;  // layouts.h kExponentiateBindStatic*
   };
   struct Tables {
     Buffer log_table, visibility_table, optimal_linear, lighting_cube, exact_indirect;
@@ -156,6 +170,7 @@ class SoftGiFrame {
   FramePassSet passes_;
   Targets targets_;
   Tables tables_;
+  StaticTransfer static_;
   Buffer environment_;
   std::uint32_t environment_width_ = 0, environment_height_ = 0;
   std::vector<Slot> slots_;

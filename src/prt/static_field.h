@@ -1,7 +1,8 @@
 #pragma once
 // The run-time form of a scene's PRT (prt/transfer.h), and the CPU form of the static-receiver
-// formula that a frame pass is to apply (not built yet: docs/prt.md, "Run time"); the pass's twin
-// tests will compare against shade_static_direct below.
+// formula that the frame applies (exponentiate.comp's static-transfer variants, with
+// static_transfer.glsl; render.static_transfer); its twin test compares against
+// shade_static_direct below (prt/static_frame.h: the whole receiver).
 //
 // A receiver of the frame is a world point p with unit normal N (facing the viewer); it is a
 // static receiver when it lies on a PRT triangle: within kStaticHitDistance of the triangle's
@@ -38,12 +39,14 @@
 #include "prt/transfer.h"
 #include "prt/static_shading.h"
 #include "sh/environment.h"
+#include "shaders/shared/layouts.h"
 
 namespace proxygi::prt {
 
-inline constexpr float kStaticHitDistance = 0.005f;           // m from the triangle's plane
-inline constexpr float kStaticHitBarycentricSlack = 1e-4f;
-inline constexpr float kStaticHitCosine = 0.5f;
+// Defined once with the frame pass that applies them (shaders/shared/layouts.h).
+inline constexpr float kStaticHitDistance = gpu_layout::kStaticHitDistance;  // m from the triangle's plane
+inline constexpr float kStaticHitBarycentricSlack = gpu_layout::kStaticHitBarycentricSlack;
+inline constexpr float kStaticHitCosine = gpu_layout::kStaticHitCosine;
 inline constexpr float kStaticGridCellsPerSpacing = 2.0f;     // cell edge / subdivision spacing
 inline constexpr std::uint32_t kStaticGridMaxCells = 1u << 21;  // the cell grows beyond this
 

@@ -12,9 +12,12 @@
 #include <glm/glm.hpp>
 #include <span>
 
+#include "settings/render_settings.h"
+
 namespace proxygi::prt {
 
-enum class StaticTransferLevel { l0, ratio, l1 };
+// The levels are the frame's setting render.static_transfer (one definition, src/settings).
+using StaticTransferLevel = settings::StaticTransfer;
 
 struct StaticReceiverSh {
   std::span<const float> clamped_cosine;                 // H(N)

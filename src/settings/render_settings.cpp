@@ -18,5 +18,6 @@ std::string_view name_of(Exponential value) { return name_of(kExponentialNames, 
 std::string_view name_of(Upsampling value) { return name_of(kUpsamplingNames, value); }
 std::string_view name_of(SplatMethod value) { return name_of(kSplatMethodNames, value); }
 std::string_view name_of(Tonemap value) { return name_of(kTonemapNames, value); }
+std::string_view name_of(StaticTransfer value) { return name_of(kStaticTransferNames, value); }
 
 }  // namespace proxygi::settings

@@ -51,6 +51,16 @@ enum class Upsampling { bilateral, bilinear };
 // or the paper's raster splat (image-space receivers only; other methods always gather).
 enum class SplatMethod { compute, raster };
 enum class Tonemap { aces, reinhard, clamp };
+// How receivers on the scene's static meshes and its ground patch combine their precomputed
+// transfer (src/prt, notes/prt-vsgl.md §2) with the proxies' occlusion O_p (render.static_transfer;
+// prt/static_shading.h has the formulas, prt/static_field.h the frame's form):
+//   l0     no static self-shadowing: E = O_p · LH(N), as every other receiver
+//   ratio  the static factor (T_DI · L)/(H · L) times the proxy-shadowed light O_p · LH(N)
+//   l1     E = O_p · (M_L T) + κ_p (B · L): the proxies' occlusion multiplied into the static
+//          self-shadowing, static geometry masking the interreflected light
+// ratio and l1 compute (or read from the PRT cache) the transfer when a scene with static meshes
+// is loaded (seconds: README "Static receivers: PRT").
+enum class StaticTransfer { l0, ratio, l1 };
 
 // Limits, defined once.
 inline constexpr int kMinShOrder = 3;  // SH order n: n bands, n² coefficients
@@ -89,6 +99,7 @@ struct RenderSettings {
   bool ground_bounce = true;
   Tonemap tonemap = Tonemap::aces;
   float exposure_ev = 0.0f;     // radiance × 2^exposure_ev before the tonemap
+  StaticTransfer static_transfer = StaticTransfer::l0;  // l0 until measured better (README)
   bool operator==(const RenderSettings&) const = default;
 };
 
@@ -115,6 +126,8 @@ inline constexpr Name<SplatMethod> kSplatMethodNames[] = {{"raster", SplatMethod
                                                           {"compute", SplatMethod::compute}};
 inline constexpr Name<Tonemap> kTonemapNames[] = {
     {"aces", Tonemap::aces}, {"reinhard", Tonemap::reinhard}, {"clamp", Tonemap::clamp}};
+inline constexpr Name<StaticTransfer> kStaticTransferNames[] = {
+    {"l0", StaticTransfer::l0}, {"ratio", StaticTransfer::ratio}, {"l1", StaticTransfer::l1}};
 
 template <class Enum, std::size_t N>
 constexpr std::string_view name_of(const Name<Enum> (&table)[N], Enum value) {
@@ -131,5 +144,6 @@ std::string_view name_of(Exponential value);
 std::string_view name_of(Upsampling value);
 std::string_view name_of(SplatMethod value);
 std::string_view name_of(Tonemap value);
+std::string_view name_of(StaticTransfer value);
 
 }  // namespace proxygi::settings

@@ -121,6 +121,7 @@ const Case kCases[] = {
     {R"({"render": {"exponential": "ps"}})", "{}", "render.exponential: unknown value \"ps\" (expected one of: hyb, ol)"},
     {R"({"render": {"upsampling": "nearest"}})", "{}", "render.upsampling: unknown value \"nearest\""},
     {R"({"render": {"method": "pixel"}})", "{}", "render.method: unknown value \"pixel\" (expected one of: image, vertex, ao)"},
+    {R"({"render": {"static_transfer": "l2"}})", "{}", "render.static_transfer: unknown value \"l2\" (expected one of: l0, ratio, l1)"},
     {R"({"render": {"splat": "mesh"}})", "{}", "render.splat: unknown value \"mesh\""},
     {R"({"render": {"tonemap": "filmic"}})", "{}", "render.tonemap: unknown value \"filmic\" (expected one of: aces, reinhard, clamp)"},
     {R"({"render": {"sh_window": 1}})", "{}", "render.sh_window: expected true or false, got an integer"},

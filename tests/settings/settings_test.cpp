@@ -35,7 +35,7 @@ TEST(SettingsFields, OneRowPerMemberEachWritingOnlyItsMember) {
     }
     EXPECT_EQ(classify_change(defaults, changed), field.needs) << field.key;
   }
-  EXPECT_EQ(fields().size(), 19u);  // the members named in fields.cpp's structured binding
+  EXPECT_EQ(fields().size(), 20u);  // the members named in fields.cpp's structured binding
 }
 
 TEST(SettingsFields, LimitsAndMessages) {
@@ -80,6 +80,10 @@ TEST(SettingsFields, NamesRoundTrip) {
   EXPECT_EQ(name_of(VsglSun::automatic), "auto");
   EXPECT_EQ(*choice_value(*find_field("vsgl_sun"), "off"), int(VsglSun::off));
   EXPECT_FALSE(choice_value(*find_field("vsgl_sun"), "on"));
+  EXPECT_EQ(name_of(StaticTransfer::l1), "l1");
+  EXPECT_EQ(*choice_value(*find_field("static_transfer"), "ratio"), int(StaticTransfer::ratio));
+  EXPECT_FALSE(choice_value(*find_field("static_transfer"), "l2"));
+  EXPECT_EQ(RenderSettings{}.static_transfer, StaticTransfer::l0);
 }
 
 TEST(SettingsChanges, ClassifiedByWhatTheyNeed) {
@@ -90,6 +94,9 @@ TEST(SettingsChanges, ClassifiedByWhatTheyNeed) {
   RenderSettings order = base;
   order.sh_order = 5;
   EXPECT_EQ(classify_change(base, order), kNeedPipelines | kNeedTables | kNeedTargets);
+  RenderSettings transfer = base;
+  transfer.static_transfer = StaticTransfer::l1;  // a shader variant and records baked for the lighting
+  EXPECT_EQ(classify_change(base, transfer), kNeedPipelines | kNeedTables);
   RenderSettings scale = base;
   scale.receiver_scale = 2;
   EXPECT_EQ(classify_change(base, scale), kNeedTargets);
