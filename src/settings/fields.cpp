@@ -204,6 +204,32 @@ std::optional<std::string> check_value(const Field& field, double value) {
   return std::nullopt;
 }
 
+std::optional<std::string> check_number(const Field& field, double value) {
+  if (is_auto(field, value)) return "must be > " + show(field.min) + " or \"auto\" (got " + show(value) + ")";
+  return check_value(field, value);
+}
+
+std::optional<std::string> value_from_name(const Field& field, std::string_view text, double& value) {
+  std::string quoted = "\"";  // appended piecewise: GCC 12's -Wrestrict misfires on a + b here
+  quoted += text;
+  quoted += '"';
+  if (field.kind == FieldKind::choice) {
+    if (auto chosen = choice_value(field, text)) {
+      value = double(*chosen);
+      return std::nullopt;
+    }
+    return "unknown value " + quoted;
+  }
+  if (field.accepts_auto) {
+    if (text == kAutoName) {
+      value = double(kEtaFromLighting);
+      return std::nullopt;
+    }
+    return "unknown value " + quoted + " (expected a number or \"auto\")";
+  }
+  return "expected a number, not " + quoted;
+}
+
 std::optional<std::string> check_settings(const RenderSettings& settings) {
   for (const Field& field : table())
     if (auto reason = check_value(field, field.get(settings))) return std::string(field.key) + ": " + *reason;
