@@ -51,6 +51,12 @@ enum class Upsampling { bilateral, bilinear };
 // or the paper's raster splat (image-space receivers only; other methods always gather).
 enum class SplatMethod { compute, raster };
 enum class Tonemap { aces, reinhard, clamp };
+// Anti-aliasing of the frame (render.antialiasing; issue 16, silhouettes): off, or supersampling
+// by f = 2 or 4 per axis: every pass runs at f× the display (receivers at 1/k of that), and the
+// resolve pass (resolve.comp) box-filters each f × f block: radiance averaged linearly, the
+// displayed colour averaged after the tonemap (the display of a mean radiance would let one
+// bright sample dominate an edge). Cost ≈ f² the frame; see README "Anti-aliasing".
+enum class Antialiasing { off, ssaa2, ssaa4 };
 
 // Limits, defined once.
 inline constexpr int kMinShOrder = 3;  // SH order n: n bands, n² coefficients
@@ -89,11 +95,14 @@ struct RenderSettings {
   bool ground_bounce = true;
   Tonemap tonemap = Tonemap::aces;
   float exposure_ev = 0.0f;     // radiance × 2^exposure_ev before the tonemap
+  Antialiasing antialiasing = Antialiasing::off;
   bool operator==(const RenderSettings&) const = default;
 };
 
 bool is_receiver_scale(int k);
 float exposure_multiplier(const RenderSettings& settings);  // 2^exposure_ev
+// f: shading samples per display pixel per axis (1 when antialiasing is off).
+int supersampling_factor(Antialiasing antialiasing);
 
 // The names of each enum in files, on the command line and in the UI. The order is the order
 // errors list them in; every enumerator appears exactly once.
@@ -116,6 +125,9 @@ inline constexpr Name<SplatMethod> kSplatMethodNames[] = {{"raster", SplatMethod
 inline constexpr Name<Tonemap> kTonemapNames[] = {
     {"aces", Tonemap::aces}, {"reinhard", Tonemap::reinhard}, {"clamp", Tonemap::clamp}};
 
+inline constexpr Name<Antialiasing> kAntialiasingNames[] = {
+    {"off", Antialiasing::off}, {"ssaa2", Antialiasing::ssaa2}, {"ssaa4", Antialiasing::ssaa4}};
+
 template <class Enum, std::size_t N>
 constexpr std::string_view name_of(const Name<Enum> (&table)[N], Enum value) {
   for (const auto& [name, e] : table)
@@ -131,5 +143,6 @@ std::string_view name_of(Exponential value);
 std::string_view name_of(Upsampling value);
 std::string_view name_of(SplatMethod value);
 std::string_view name_of(Tonemap value);
+std::string_view name_of(Antialiasing value);
 
 }  // namespace proxygi::settings
