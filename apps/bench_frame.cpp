@@ -37,6 +37,7 @@ struct BenchOptions {
   std::string indirect_method = "proxy";       // settings::kIndirectMethodNames
   int vsgl_lights = 1;                         // render.vsgl_lights (indirect_method vsgl)
   std::string vsgl_grouping = "vertex_ranges"; // settings::kVsglGroupingNames
+  std::string antialiasing = "off";            // settings::kAntialiasingNames
   std::vector<std::string> only;               // empty: every row; else "default", "crowd", "baselines", "prt"
   bool runs(const std::string& part) const { return only.empty() || asked(part); }
   bool asked(const std::string& part) const { return std::find(only.begin(), only.end(), part) != only.end(); }
@@ -90,6 +91,8 @@ Result<ConfigResult> run_config(gpu::Context& context, const std::string& name,
   render.vsgl_lights = options.vsgl_lights;
   for (const auto& [text, value] : settings::kVsglGroupingNames)
     if (text == options.vsgl_grouping) render.vsgl_grouping = value;
+  for (const auto& [text, value] : settings::kAntialiasingNames)
+    if (text == options.antialiasing) render.antialiasing = value;
   auto renderer = gpu::SceneRenderer::create(context, world, render, std::uint32_t(options.size),
                                              std::uint32_t(options.size));
   if (!renderer) return renderer.error();
@@ -201,6 +204,7 @@ int run_bench_frame(const BenchOptions& options) {
     out["indirect_method"] = options.indirect_method;
     out["vsgl_lights"] = options.vsgl_lights;
     out["vsgl_grouping"] = options.vsgl_grouping;
+    out["antialiasing"] = options.antialiasing;
     out["peak_resident_mib"] = peak_mib;
     if (has_default) out["speedup_quarter_over_full"] = k1 / k4;
     for (const auto& result : results) {
@@ -230,6 +234,7 @@ int run_bench_frame(const BenchOptions& options) {
               options.indirect_operator.c_str());
   if (options.indirect_method == "vsgl")
     std::printf(", %d lights per character by %s", options.vsgl_lights, options.vsgl_grouping.c_str());
+  if (options.antialiasing != "off") std::printf(", antialiasing %s", options.antialiasing.c_str());
   std::printf("\n");
   std::printf("%-8s %-6s %-7s %3s %9s %5s %7s %9s %6s |", "scene", "method", "splat", "k", "receivers", "chars",
               "proxies", "frame ms", "fps");
@@ -281,6 +286,8 @@ void add_bench_frame_command(CLI::App& bench, CommandRunner& runner) {
                                              settings::kVsglLightsPerCharacter.end())));
   command->add_option("--vsgl-grouping", options->vsgl_grouping, "vsgl: vertex_ranges or bone_groups (render.vsgl_grouping)")
       ->check(CLI::IsMember({"vertex_ranges", "bone_groups"}));
+  command->add_option("--antialiasing", options->antialiasing, "Anti-aliasing of every setting (render.antialiasing)")
+      ->check(CLI::IsMember({"off", "ssaa2", "ssaa4"}));
   command->add_option("--only", options->only,
                       "Rows to run (default: all but prt): default, baselines, crowd, prt (the wall corner at each "
                       "render.static_transfer)")

@@ -145,6 +145,13 @@ struct CompositePush {
   uint padding1;
 };
 
+// Push constants of supersample_resolve.comp (render.antialiasing).
+struct SupersamplePush {
+  uint width;             // display pixels; the samples are (width·factor) × (height·factor)
+  uint height;
+  uint factor;            // f samples per pixel per axis
+  uint ldr_swap_red_blue; // 1: the packed 8-bit frame out in B, G, R, A byte order (FrameOutput)
+};
 
 // Push constants of gbuffer.vert/frag: one draw per primitive.
 // Albedo = base_color.rgb × texture(binding 5) at uv' = (u·xyz, v·xyz) of (uv, 1): the rows of
@@ -371,6 +378,11 @@ PROXYGI_CONST(uint, kSplatBindReceivers, 1u);
 PROXYGI_CONST(uint, kSplatBindProxies, 2u);
 PROXYGI_CONST(uint, kSplatBindBoundingMesh, 4u);
 PROXYGI_CONST(uint, kSplatBindLogTable, 3u);
+// supersample_resolve.comp
+PROXYGI_CONST(uint, kSupersampleBindSampleHdr, 0u);
+PROXYGI_CONST(uint, kSupersampleBindSampleLdr, 1u);
+PROXYGI_CONST(uint, kSupersampleBindHdr, 2u);
+PROXYGI_CONST(uint, kSupersampleBindLdr, 3u);
 // splat_resolve.comp (targets at kResolveBindFirstTarget + i)
 PROXYGI_CONST(uint, kResolveBindFrame, 0u);
 PROXYGI_CONST(uint, kResolveBindLogOcclusion, 1u);
@@ -386,6 +398,7 @@ static_assert(offsetof(FrameConstants, display_width) == 160 && offsetof(FrameCo
 static_assert(sizeof(GbufferPush) == 64);
 static_assert(sizeof(Receiver) == 32 && sizeof(Receiver) == kReceiverTexels * sizeof(glm::vec4));
 static_assert(sizeof(CompositePush) == 16);
+static_assert(sizeof(SupersamplePush) == 16);
 static_assert(sizeof(SkinPush) == 32);
 static_assert(sizeof(VertexReceiversPush) == 16);
 static_assert(sizeof(VsglPartial) == 64 && sizeof(VsglLight) == 48 && sizeof(VsglLightsPush) == 48);

@@ -26,16 +26,22 @@ struct FrameConfig {
   // Vertex method: receiver capacity, Σ round_up_to_receiver_group(vertex count) over the draws.
   std::uint32_t vertex_receivers = 0;
 
-  // The receiver "image": display / k, or for the vertex method kVertexReceiverWidth × rows.
+  // Supersampling (render.antialiasing): every pass shades shading_width × shading_height, f× the
+  // display per axis, and the resolve pass box-filters that down to width × height. f = 1: equal.
+  std::uint32_t supersampling() const { return std::uint32_t(settings::supersampling_factor(render.antialiasing)); }
+  std::uint32_t shading_width() const { return width * supersampling(); }
+  std::uint32_t shading_height() const { return height * supersampling(); }
+
+  // The receiver "image": shading size / k, or for the vertex method kVertexReceiverWidth × rows.
   std::uint32_t receiver_width() const {
     const auto k = std::uint32_t(render.receiver_scale);
-    return render.method == settings::ShadingMethod::vertex ? kVertexReceiverWidth : (width + k - 1) / k;
+    return render.method == settings::ShadingMethod::vertex ? kVertexReceiverWidth : (shading_width() + k - 1) / k;
   }
   std::uint32_t receiver_height() const {
     if (render.method == settings::ShadingMethod::vertex)
       return std::max(round_up_to_receiver_group(vertex_receivers), kVertexReceiverGroup) / kVertexReceiverWidth;
     const auto k = std::uint32_t(render.receiver_scale);
-    return (height + k - 1) / k;
+    return (shading_height() + k - 1) / k;
   }
   std::uint64_t receiver_count() const { return std::uint64_t(receiver_width()) * receiver_height(); }
   bool operator==(const FrameConfig&) const = default;

@@ -42,6 +42,7 @@ Result<FramePassSet> FramePassSet::create(Context& context, const FrameConfig& c
   }
   if (ambient_occlusion) {
     if (Status s = emplace(set.ambient_occlusion, AmbientOcclusionPass::create(context, order)); !s) return s.error();
+    if (Status s = set.rebuild_sized(context, config); !s) return s.error();
     return set;
   }
   if (!uses_raster_splat(config))
@@ -58,8 +59,11 @@ Result<FramePassSet> FramePassSet::create(Context& context, const FrameConfig& c
 
 Status FramePassSet::rebuild_sized(Context& context, const FrameConfig& config) {
   shadow_splat.reset();
+  if (config.supersampling() == 1) supersample_resolve.reset();
+  else if (!supersample_resolve)
+    if (Status s = emplace(supersample_resolve, SupersampleResolvePass::create(context)); !s) return s;
   if (!uses_raster_splat(config)) return {};
-  auto splat = ShadowSplatPass::create(context, config.render.sh_order, config.width, config.height,
+  auto splat = ShadowSplatPass::create(context, config.render.sh_order, config.shading_width(), config.shading_height(),
                                        std::uint32_t(config.render.receiver_scale));
   if (!splat) return splat.error();
   shadow_splat = std::move(*splat);

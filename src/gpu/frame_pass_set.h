@@ -13,6 +13,7 @@
 #include "gpu/receivers_pass.h"
 #include "gpu/shadow_gather_pass.h"
 #include "gpu/shadow_splat_pass.h"
+#include "gpu/supersample_resolve_pass.h"
 #include "gpu/upsample_composite_pass.h"
 #include "gpu/vertex_receivers_pass.h"
 #include "gpu/rsm_pass.h"
@@ -32,9 +33,11 @@ struct FramePassSet {
   std::optional<VsglLightsPass> vsgl_lights;             // indirect_method vsgl
   std::optional<RsmPass> rsm;                            // indirect_method vsgl, vsgl_sun auto
   std::optional<UpsampleCompositePass> upsample_composite;
+  std::optional<SupersampleResolvePass> supersample_resolve;  // antialiasing ssaa* (sized: made with the targets)
 
   static Result<FramePassSet> create(Context& context, const FrameConfig& config);
-  // The raster splat is sized by the receivers: rebuilt when only the targets change.
+  // The raster splat is sized by the receivers and the resolve exists with supersampled targets:
+  // both rebuilt when only the targets change.
   Status rebuild_sized(Context& context, const FrameConfig& config);
 };
 

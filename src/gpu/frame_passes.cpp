@@ -17,6 +17,7 @@ const char* frame_pass_name(FramePass pass) {
     case FramePass::exponentiate: return "exponentiate";
     case FramePass::indirect: return "indirect";
     case FramePass::upsample_composite: return "upsample+composite";
+    case FramePass::supersample_resolve: return "supersample_resolve";
     case FramePass::count: break;
   }
   return "unknown";
@@ -25,12 +26,13 @@ const char* frame_pass_name(FramePass pass) {
 std::span<const FramePass> frame_pass_order(settings::ShadingMethod method) {
   static constexpr FramePass kImageSpace[] = {FramePass::gbuffer, FramePass::receivers, FramePass::shadow,
                                               FramePass::exponentiate, FramePass::indirect,
-                                              FramePass::upsample_composite};
+                                              FramePass::upsample_composite, FramePass::supersample_resolve};
   // The G-buffer pass interpolates the vertex irradiance, so it follows the shading passes.
   static constexpr FramePass kVertex[] = {FramePass::receivers, FramePass::shadow, FramePass::exponentiate,
-                                          FramePass::indirect, FramePass::gbuffer, FramePass::upsample_composite};
+                                          FramePass::indirect, FramePass::gbuffer, FramePass::upsample_composite,
+                                          FramePass::supersample_resolve};
   static constexpr FramePass kAmbientOcclusion[] = {FramePass::gbuffer, FramePass::receivers, FramePass::shadow,
-                                                    FramePass::upsample_composite};
+                                                    FramePass::upsample_composite, FramePass::supersample_resolve};
   switch (method) {
     case settings::ShadingMethod::vertex: return kVertex;
     case settings::ShadingMethod::ambient_occlusion: return kAmbientOcclusion;

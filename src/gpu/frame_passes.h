@@ -11,6 +11,7 @@
 //   vsgl_lights_pass.h         vsgl_lights.comp          (indirect_method vsgl, in step 6) draws → VSGL lights
 //   rsm_pass.h                 rsm.vert/.frag, rsm_sums.comp  (vsgl_sun auto, sun up; before it) draws → sun map → sums
 //   upsample_composite_pass.h  upsample_composite.comp   G-buffer, shaded, environment → irradiance, HDR, sRGB
+//   supersample_resolve_pass.h supersample_resolve.comp  (antialiasing ssaa*) f × f samples → display HDR, sRGB
 //   vertex_receivers_pass.h    vertex_receivers.comp     (vertex baseline) mesh vertices → receivers
 //   ambient_occlusion_pass.h   ambient_occlusion.comp    (AO baseline) receivers, proxies → direct, shaded
 // SoftGiFrame records them in frame_pass_order(method); the baselines reuse the slots' names
@@ -27,9 +28,10 @@ namespace proxygi::gpu {
 
 class Context;
 
-enum class FramePass { skin, gbuffer, receivers, shadow, exponentiate, indirect, upsample_composite, count };
+enum class FramePass { skin, gbuffer, receivers, shadow, exponentiate, indirect, upsample_composite, supersample_resolve, count };
 const char* frame_pass_name(FramePass pass);
-// The passes a method records, in order (skinning, run by the caller, excluded).
+// The passes a method records, in order (skinning, run by the caller, excluded; the supersample
+// resolve records nothing when antialiasing is off).
 std::span<const FramePass> frame_pass_order(settings::ShadingMethod method);
 
 inline constexpr VkFormat kGbufferFormat = VK_FORMAT_R32G32B32A32_SFLOAT;

@@ -20,7 +20,7 @@ Result<image::ImageF> SoftGiFrame::read_vec4_buffer(const Buffer& buffer, std::u
 Result<std::vector<std::uint8_t>> SoftGiFrame::read_ldr() const { return readback(context_, targets_.ldr); }
 Result<image::ImageF> SoftGiFrame::read_hdr() const { return read_vec4_buffer(targets_.hdr, config_.width, config_.height); }
 Result<image::ImageF> SoftGiFrame::read_irradiance() const {
-  return read_vec4_buffer(targets_.irradiance, config_.width, config_.height);
+  return read_vec4_buffer(targets_.irradiance, config_.shading_width(), config_.shading_height());
 }
 Result<image::ImageF> SoftGiFrame::read_direct() const {
   return read_vec4_buffer(targets_.direct, config_.receiver_width(), config_.receiver_height());
@@ -72,7 +72,7 @@ Result<image::ImageF> SoftGiFrame::read_receiver_normals() const { return read_r
 Result<image::ImageF> SoftGiFrame::read_gbuffer_image(const Image& image) const {
   auto bytes = readback(context_, image, VK_IMAGE_LAYOUT_GENERAL);  // record() leaves them GENERAL
   if (!bytes) return bytes.error();
-  image::ImageF out{int(config_.width), int(config_.height)};
+  image::ImageF out{int(config_.shading_width()), int(config_.shading_height())};
   std::memcpy(out.pixels.data(), bytes->data(), std::min(bytes->size(), out.pixels.size() * sizeof(glm::vec4)));
   return out;
 }

@@ -65,11 +65,11 @@ Status SoftGiFrame::build_targets() {
   const VkImageUsageFlags target_usage =
       VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
   for (Image* image : {&targets.position_depth, &targets.normal, &targets.albedo}) {
-    auto made = Image::create(context_, config.width, config.height, kGbufferFormat, target_usage);
+    auto made = Image::create(context_, config.shading_width(), config.shading_height(), kGbufferFormat, target_usage);
     if (!made) return made.error();
     *image = std::move(*made);
   }
-  auto depth = Image::create(context_, config.width, config.height, kDepthFormat,
+  auto depth = Image::create(context_, config.shading_width(), config.shading_height(), kDepthFormat,
                              VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT);
   if (!depth) return depth.error();
   targets.depth = std::move(*depth);
@@ -85,6 +85,8 @@ Status SoftGiFrame::build_targets() {
 
   const VkDeviceSize receivers = config.receiver_count();
   const VkDeviceSize pixels = VkDeviceSize(config.width) * config.height;
+  const VkDeviceSize samples = VkDeviceSize(config.shading_width()) * config.shading_height();
+  const bool supersampled = config.supersampling() > 1;
   const VkDeviceSize coefficients = VkDeviceSize(config.render.sh_order) * VkDeviceSize(config.render.sh_order);
   struct Target {
     Buffer* buffer;
@@ -96,14 +98,17 @@ Status SoftGiFrame::build_targets() {
       {&targets.direct, receivers * sizeof(glm::vec4)},
       {&targets.indirect, receivers * sizeof(glm::vec4)},
       {&targets.shaded, receivers * sizeof(glm::vec4)},
-      {&targets.irradiance, pixels * sizeof(glm::vec4)},
+      {&targets.irradiance, samples * sizeof(glm::vec4)},
       {&targets.hdr, pixels * sizeof(glm::vec4)},
       {&targets.ldr, pixels * sizeof(std::uint32_t)},
+      {&targets.sample_hdr, supersampled ? samples * sizeof(glm::vec4) : 0},
+      {&targets.sample_ldr, supersampled ? samples * sizeof(std::uint32_t) : 0},
       {&targets.tile_counts, VkDeviceSize(tiles_x()) * tiles_y() * sizeof(std::uint32_t)},
       {&targets.vsgl_partials, VsglLightsPass::partials_bytes()},
       {&targets.vsgl_lights, VsglLightsPass::lights_bytes()},
   };
   for (const auto& target : buffers) {
+    if (target.bytes == 0) continue;  // not used by this configuration
     auto made = Buffer::create(context_, target.bytes, kStorage | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
                                MemoryKind::device_local);
     if (!made) return made.error();

@@ -111,8 +111,8 @@ Status SoftGiFrame::write_slot(std::uint32_t slot, const FrameView& view, std::s
                                     ? 1u
                                     : 0u;
   constants.occlusion_scale = render.method == settings::ShadingMethod::ambient_occlusion ? 1.0f : 1.0f / 3.5449077018110318f;
-  constants.display_width = config_.width;
-  constants.display_height = config_.height;
+  constants.display_width = config_.shading_width();  // the passes' "display" is the shading grid
+  constants.display_height = config_.shading_height();
   constants.receiver_width = config_.receiver_width();
   constants.receiver_height = config_.receiver_height();
   constants.proxy_count = std::uint32_t(spheres.size());
@@ -180,7 +180,8 @@ void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot_index
   };
   switch (pass) {
     case FramePass::gbuffer:
-      run(*passes_.gbuffer, GbufferPass::Inputs{&slot.constants, draws, &t.shaded, config_.vertex_receivers, config_.width, config_.height},
+      run(*passes_.gbuffer, GbufferPass::Inputs{&slot.constants, draws, &t.shaded, config_.vertex_receivers,
+                                        config_.shading_width(), config_.shading_height()},
           GbufferPass::Outputs{&t.position_depth, &t.normal, &t.albedo, &t.depth});
       break;
     case FramePass::receivers:
@@ -233,13 +234,25 @@ void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot_index
                                &tables_.exact_indirect, &t.vsgl_lights, rw, rh},
           IndirectPass::Outputs{&t.indirect, &t.shaded});
       break;
-    case FramePass::upsample_composite:
+    case FramePass::upsample_composite: {
+      // Supersampled: the composite writes the samples in RGBA order, the resolve the display frame.
+      const bool supersampled = passes_.supersample_resolve.has_value();
       run(*passes_.upsample_composite,
           UpsampleCompositePass::Inputs{&slot.constants, &t.position_depth, &t.normal, &t.albedo, &t.receivers,
                                         &t.shaded, &t.direct, &t.indirect, &t.tile_counts, &environment_,
                                         environment_width_, environment_height_,
-                                        config_.width, config_.height, ldr_bgra_, slot.debug_view},
-          UpsampleCompositePass::Outputs{&t.irradiance, &t.hdr, &t.ldr});
+                                        config_.shading_width(), config_.shading_height(), ldr_bgra_ && !supersampled,
+                                        slot.debug_view},
+          UpsampleCompositePass::Outputs{&t.irradiance, supersampled ? &t.sample_hdr : &t.hdr,
+                                         supersampled ? &t.sample_ldr : &t.ldr});
+      break;
+    }
+    case FramePass::supersample_resolve:
+      if (passes_.supersample_resolve)
+        run(*passes_.supersample_resolve,
+            SupersampleResolvePass::Inputs{&t.sample_hdr, &t.sample_ldr, config_.width, config_.height,
+                                           config_.supersampling(), ldr_bgra_},
+            SupersampleResolvePass::Outputs{&t.hdr, &t.ldr});
       break;
     case FramePass::skin:
     case FramePass::count:

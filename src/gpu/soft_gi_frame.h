@@ -93,12 +93,13 @@ class SoftGiFrame {
   image::ImageF slot_hdr(std::uint32_t slot) const;
 
   // Readback of the last recorded frame's intermediate results (after its submit completed).
-  // "Receiver res" is the receiver image of FrameConfig::receiver_width/height: for the vertex
+  // "Shading res" is FrameConfig::shading_width/height (the display res unless antialiasing
+  // supersamples); "receiver res" is the receiver image of FrameConfig::receiver_width/height: for the vertex
   // method, receiver i is vertex i of the draws in order (groups of 64 per draw, the rest empty),
   // and the G-buffer's normal target holds the interpolated vertex irradiance instead.
   Result<std::vector<std::uint8_t>> read_ldr() const;   // RGBA8 sRGB, width × height
-  Result<image::ImageF> read_hdr() const;                // linear radiance
-  Result<image::ImageF> read_irradiance() const;         // display res, upsampled E
+  Result<image::ImageF> read_hdr() const;                // linear radiance, display res
+  Result<image::ImageF> read_irradiance() const;         // shading res, upsampled E
   Result<image::ImageF> read_direct() const;             // receiver res: rgb E_direct, a (O_p)_0
   Result<image::ImageF> read_indirect() const;           // receiver res: rgb E_indirect, a ω_p
   Result<image::ImageF> read_receiver_positions() const; // receiver res: xyz p, a eye depth
@@ -119,7 +120,7 @@ class SoftGiFrame {
   // the frame has none.
   Status set_static_transfer(const prt::StaticTransferField* field, std::span<const float> records);
   std::size_t static_transfer_bytes() const;  // GPU memory of those buffers
-  // G-buffer (display res): xyz world position, a eye depth (0 = background); xyz normal.
+  // G-buffer (shading res): xyz world position, a eye depth (0 = background); xyz normal.
   Result<image::ImageF> read_gbuffer_positions() const;
   Result<image::ImageF> read_gbuffer_normals() const;
   Result<image::ImageF> read_gbuffer_albedo() const;
@@ -127,7 +128,8 @@ class SoftGiFrame {
   // The frame's targets and tables (src/gpu/frame_resources.cpp).
   struct Targets {
     Image position_depth, normal, albedo, depth;
-    Buffer receivers, log_occlusion, direct, indirect, shaded, irradiance, hdr, ldr;
+    Buffer receivers, log_occlusion, direct, indirect, shaded, irradiance, hdr, ldr;  // hdr, ldr: display size
+    Buffer sample_hdr, sample_ldr;  // antialiasing ssaa*: the composite's samples (shading size), else empty
     Buffer tile_counts;  // uint per 8×8-receiver tile (tile_count()), the shadow pass's list lengths
     Buffer vsgl_partials, vsgl_lights;  // VsglLightsPass outputs (small: allocated for every method)
     Image rsm_position, rsm_normal, rsm_flux, rsm_depth;  // RsmPass outputs (kRsmSize², every method)

@@ -45,14 +45,16 @@ Overrides read_overrides(const json& value, const std::string& path) {
     if (key.rfind("render.", 0) == 0) {
       const settings::Field* field = settings::find_field(std::string_view(key).substr(7));
       if (field == nullptr) fail(where, "unknown render setting");
-      if (field->kind == settings::FieldKind::choice) {
-        const auto chosen = settings::choice_value(*field, detail::read_string(v, where));
-        if (!chosen) fail(where, "unknown value " + v.dump());
-        out[key] = double(*chosen);
+      if (field->kind == settings::FieldKind::choice || (field->accepts_auto && v.is_string())) {
+        double named = 0.0;  // a choice's name, or "auto"
+        if (auto why = settings::value_from_name(*field, detail::read_string(v, where), named)) fail(where, *why);
+        out[key] = named;
       } else if (field->kind == settings::FieldKind::boolean) {
         out[key] = detail::read_bool(v, where) ? 1.0 : 0.0;
       } else {
-        out[key] = detail::read_double(v, where);
+        const double number = detail::read_double(v, where);
+        if (auto why = settings::check_number(*field, number)) fail(where, *why);
+        out[key] = number;
       }
     } else if (key == "output.width" || key == "output.height" || key == "output.frames.first" ||
                key == "output.frames.count") {

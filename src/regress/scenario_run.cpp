@@ -15,6 +15,24 @@ image::ImageF scaled(image::ImageF image, float scale) {
   return image;
 }
 
+// A shading-resolution readback (render.antialiasing supersamples by f) at the display size:
+// each pixel's f × f block averaged (AOVs), or its sample nearest the pixel centre (positions,
+// where a mean would mix the character and the ground). f = 1: unchanged.
+image::ImageF at_display(image::ImageF image, int width, int height, bool average) {
+  if (image.width == width && image.height == height) return image;
+  const int f = image.width / width;
+  image::ImageF out{width, height};
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      glm::vec4 sum(0.0f);
+      for (int j = 0; j < f; ++j)
+        for (int i = 0; i < f; ++i)
+          if (average || (i == f / 2 && j == f / 2)) sum += image.pixels[std::size_t((y * f + j) * image.width + x * f + i)];
+      out.pixels[std::size_t(y * width + x)] = average ? sum / float(f * f) : sum;
+    }
+  return out;
+}
+
 }  // namespace
 
 const image::ImageF& RenderedFrame::aov(Aov aov) const { return aov == Aov::albedo ? albedo : irradiance; }
@@ -67,6 +85,7 @@ Result<RenderedFrame> ScenarioRun::render(int frame, bool aovs) {
   out.final_frame = Rgba8{width, height, std::move(finished->ldr)};
   auto positions = renderer_->frame().read_gbuffer_positions();
   if (!positions) return positions.error();
+  *positions = at_display(std::move(*positions), width, height, false);
   out.classes.resize(positions->pixels.size());
   const bool ground = scenario_.scene.ground.enabled;
   for (std::size_t i = 0; i < positions->pixels.size(); ++i) {
@@ -76,10 +95,10 @@ Result<RenderedFrame> ScenarioRun::render(int frame, bool aovs) {
   if (aovs) {
     auto irradiance = renderer_->frame().read_irradiance();
     if (!irradiance) return irradiance.error();
-    out.irradiance = scaled(std::move(*irradiance), float(1.0 / std::numbers::pi));
+    out.irradiance = scaled(at_display(std::move(*irradiance), width, height, true), float(1.0 / std::numbers::pi));
     auto albedo = renderer_->frame().read_gbuffer_albedo();
     if (!albedo) return albedo.error();
-    out.albedo = scaled(std::move(*albedo), 1.0f);
+    out.albedo = scaled(at_display(std::move(*albedo), width, height, true), 1.0f);
   }
   return out;
 }

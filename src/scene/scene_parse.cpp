@@ -250,13 +250,13 @@ settings::RenderSettings read_render(const json& value, const std::string& path)
       case settings::FieldKind::integer: field.set(s, double(detail::read_int(*v, where))); break;
       case settings::FieldKind::real: {
         if (field.accepts_auto && v->is_string()) {  // "auto": chosen from the lighting
-          const std::string text = detail::read_string(*v, where);
-          if (text != settings::kAutoName) fail(where, "unknown value \"" + text + "\" (expected a number or \"auto\")");
-          field.set(s, double(settings::kEtaFromLighting));
+          double named = 0.0;
+          if (auto why = settings::value_from_name(field, detail::read_string(*v, where), named)) fail(where, *why);
+          field.set(s, named);
           break;
         }
         const double number = double(detail::read_float(*v, where));
-        if (settings::is_auto(field, number)) fail(where, "must be > " + std::to_string(int(field.min)) + " or \"auto\" (got 0)");
+        if (settings::is_auto(field, number)) fail(where, *settings::check_number(field, number));
         field.set(s, number);
         break;
       }

@@ -45,6 +45,7 @@ constexpr auto kUpsamplingChoices = choices_of(kUpsamplingNames);
 constexpr auto kSplatChoices = choices_of(kSplatMethodNames);
 constexpr auto kTonemapChoices = choices_of(kTonemapNames);
 constexpr auto kStaticTransferChoices = choices_of(kStaticTransferNames);
+constexpr auto kAntialiasingChoices = choices_of(kAntialiasingNames);
 
 template <auto Member>
 Field choice(std::string_view key, std::string_view description, Needs needs, std::span<const Choice> choices) {
@@ -135,6 +136,8 @@ const std::vector<Field>& table() {
       choice<&S::static_transfer>("static_transfer",
                                   "static meshes' PRT: l0 (no static self-shadowing), ratio or l1 (proxies × static transfer)",
                                   kNeedPipelines | kNeedTables, kStaticTransferChoices),
+      choice<&S::antialiasing>("antialiasing", "supersampling: shade f × f samples per pixel (ssaa2, ssaa4) and box-filter them, or off",
+                               kNeedTargets | kNeedConstants, kAntialiasingChoices),
   };
   return fields;
 }
@@ -144,11 +147,11 @@ const std::vector<Field>& table() {
 [[maybe_unused]] void every_member_has_a_row(const RenderSettings& settings) {
   const auto& [method, sh_order, receiver_scale, shadow_eta, indirect_eta, sh_window, indirect_operator, exponential,
                hyb_tau, upsampling, bilateral_depth_epsilon, splat, indirect_method, vsgl_lights, vsgl_grouping,
-               vsgl_sun, ground_bounce, tonemap, exposure_ev, static_transfer] = settings;
+               vsgl_sun, ground_bounce, tonemap, exposure_ev, static_transfer, antialiasing] = settings;
   (void)method, (void)sh_order, (void)receiver_scale, (void)shadow_eta, (void)indirect_eta, (void)sh_window;
   (void)indirect_operator, (void)exponential, (void)hyb_tau, (void)upsampling, (void)bilateral_depth_epsilon;
   (void)splat, (void)indirect_method, (void)vsgl_lights, (void)vsgl_grouping, (void)vsgl_sun, (void)ground_bounce, (void)tonemap;
-  (void)exposure_ev, (void)static_transfer;
+  (void)exposure_ev, (void)static_transfer, (void)antialiasing;
 }
 
 std::string show(double value) {
@@ -207,6 +210,32 @@ std::optional<std::string> check_value(const Field& field, double value) {
       return std::nullopt;
   }
   return std::nullopt;
+}
+
+std::optional<std::string> check_number(const Field& field, double value) {
+  if (is_auto(field, value)) return "must be > " + show(field.min) + " or \"auto\" (got " + show(value) + ")";
+  return check_value(field, value);
+}
+
+std::optional<std::string> value_from_name(const Field& field, std::string_view text, double& value) {
+  std::string quoted = "\"";  // appended piecewise: GCC 12's -Wrestrict misfires on a + b here
+  quoted += text;
+  quoted += '"';
+  if (field.kind == FieldKind::choice) {
+    if (auto chosen = choice_value(field, text)) {
+      value = double(*chosen);
+      return std::nullopt;
+    }
+    return "unknown value " + quoted;
+  }
+  if (field.accepts_auto) {
+    if (text == kAutoName) {
+      value = double(kEtaFromLighting);
+      return std::nullopt;
+    }
+    return "unknown value " + quoted + " (expected a number or \"auto\")";
+  }
+  return "expected a number, not " + quoted;
 }
 
 std::optional<std::string> check_settings(const RenderSettings& settings) {

@@ -61,6 +61,13 @@ std::optional<std::string> check_value(const Field& field, double value);
 // Whether `value` is the "auto" of a field that accepts it.
 bool is_auto(const Field& field, double value);
 inline constexpr std::string_view kAutoName = "auto";
+// A value written as a number (scene file, viewer script, scenario override): check_value, except
+// that the stored form of "auto" (kEtaFromLighting, 0) is refused as a number, so `0` is an error
+// and only the string "auto" selects it.
+std::optional<std::string> check_number(const Field& field, double value);
+// A value written as a string: a choice's name, or "auto" for a field that accepts it. The reason
+// when `text` is neither ("unknown value \"big\" (expected a number or \"auto\")").
+std::optional<std::string> value_from_name(const Field& field, std::string_view text, double& value);
 // The first invalid field of `settings` with its reason, as "key: reason"; nothing when valid.
 std::optional<std::string> check_settings(const RenderSettings& settings);
 

@@ -61,6 +61,12 @@ enum class Tonemap { aces, reinhard, clamp };
 // ratio and l1 compute (or read from the PRT cache) the transfer when a scene with static meshes
 // is loaded (seconds: README "Static receivers: PRT").
 enum class StaticTransfer { l0, ratio, l1 };
+// Anti-aliasing of the frame (render.antialiasing; issue 16, silhouettes): off, or supersampling
+// by f = 2 or 4 per axis: every pass runs at f× the display (receivers at 1/k of that), and the
+// resolve pass (resolve.comp) box-filters each f × f block: radiance averaged linearly, the
+// displayed colour averaged after the tonemap (the display of a mean radiance would let one
+// bright sample dominate an edge). Cost ≈ f² the frame; see README "Anti-aliasing".
+enum class Antialiasing { off, ssaa2, ssaa4 };
 
 // Limits, defined once.
 inline constexpr int kMinShOrder = 3;  // SH order n: n bands, n² coefficients
@@ -100,11 +106,14 @@ struct RenderSettings {
   Tonemap tonemap = Tonemap::aces;
   float exposure_ev = 0.0f;     // radiance × 2^exposure_ev before the tonemap
   StaticTransfer static_transfer = StaticTransfer::l0;  // l0 until measured better (README)
+  Antialiasing antialiasing = Antialiasing::off;
   bool operator==(const RenderSettings&) const = default;
 };
 
 bool is_receiver_scale(int k);
 float exposure_multiplier(const RenderSettings& settings);  // 2^exposure_ev
+// f: shading samples per display pixel per axis (1 when antialiasing is off).
+int supersampling_factor(Antialiasing antialiasing);
 
 // The names of each enum in files, on the command line and in the UI. The order is the order
 // errors list them in; every enumerator appears exactly once.
@@ -129,6 +138,9 @@ inline constexpr Name<Tonemap> kTonemapNames[] = {
 inline constexpr Name<StaticTransfer> kStaticTransferNames[] = {
     {"l0", StaticTransfer::l0}, {"ratio", StaticTransfer::ratio}, {"l1", StaticTransfer::l1}};
 
+inline constexpr Name<Antialiasing> kAntialiasingNames[] = {
+    {"off", Antialiasing::off}, {"ssaa2", Antialiasing::ssaa2}, {"ssaa4", Antialiasing::ssaa4}};
+
 template <class Enum, std::size_t N>
 constexpr std::string_view name_of(const Name<Enum> (&table)[N], Enum value) {
   for (const auto& [name, e] : table)
@@ -145,5 +157,6 @@ std::string_view name_of(Upsampling value);
 std::string_view name_of(SplatMethod value);
 std::string_view name_of(Tonemap value);
 std::string_view name_of(StaticTransfer value);
+std::string_view name_of(Antialiasing value);
 
 }  // namespace proxygi::settings

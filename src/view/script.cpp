@@ -17,17 +17,22 @@ Modifiers modifiers_of(const json& object) {
   return {object.value("shift", false), object.value("ctrl", false)};
 }
 
-// A setting value: a number, a boolean, or a choice's name.
+// A setting value: a number, a boolean, a choice's name or "auto" (settings::value_from_name).
 Result<double> setting_value(const std::string& key, const json& value) {
   const settings::Field* field = settings::find_field(key);
   if (!field) return make_error("unknown setting \"" + key + "\"");
   if (value.is_boolean()) return value.get<bool>() ? 1.0 : 0.0;
-  if (value.is_number()) return value.get<double>();
-  if (value.is_string() && field->kind == settings::FieldKind::choice) {
-    if (auto choice = settings::choice_value(*field, value.get<std::string>())) return double(*choice);
-    return make_error(key + ": unknown choice \"" + value.get<std::string>() + "\"");
+  if (value.is_number()) {
+    const double number = value.get<double>();
+    if (auto why = settings::check_number(*field, number)) return make_error(key + ": " + *why);
+    return number;
   }
-  return make_error(key + ": expected a number, a boolean or a choice name");
+  if (value.is_string()) {
+    double named = 0.0;
+    if (auto why = settings::value_from_name(*field, value.get<std::string>(), named)) return make_error(key + ": " + *why);
+    return named;
+  }
+  return make_error(key + ": expected a number, a boolean, a choice name or \"auto\"");
 }
 
 Status parse_event(const json& item, std::vector<TimedEvent>& out) {

@@ -56,6 +56,28 @@ TEST(Scenario, ErrorsNameTheField) {
   EXPECT_NE(bad.message().find("overrides.render.sh_ordr: unknown render setting"), std::string::npos) << bad.message();
 }
 
+// "auto" η in overrides (and differential a/b blocks), as in scene files; the stored 0 as a number is refused.
+TEST(Scenario, OverridesTakeAutoEta) {
+  auto s = parse(R"({"name": "d", "type": "differential", "kind": "settings", "a": {"render.shadow_eta": "auto"}, "b": {"render.shadow_eta": 15}})",
+                 R"("overrides": {"render.shadow_eta": "auto"}, )");
+  ASSERT_TRUE(s.ok()) << s.message();
+  EXPECT_EQ(s->scene.render.shadow_eta, settings::kEtaFromLighting);
+  EXPECT_EQ(s->checks[0].a.at("render.shadow_eta"), double(settings::kEtaFromLighting));
+  EXPECT_EQ(s->checks[0].b.at("render.shadow_eta"), 15.0);
+  const std::pair<std::string, std::string> cases[] = {
+      {R"("overrides": {"render.shadow_eta": 0}, )", "overrides.render.shadow_eta: must be > 1 or \"auto\" (got 0)"},
+      {R"("overrides": {"render.shadow_eta": "big"}, )",
+       "overrides.render.shadow_eta: unknown value \"big\" (expected a number or \"auto\")"},
+      {R"("overrides": {"render.indirect_eta": "auto"}, )", "overrides.render.indirect_eta: expected a number"},
+      {R"("overrides": {"render.tonemap": "filmic"}, )", "overrides.render.tonemap: unknown value \"filmic\""},
+  };
+  for (const auto& [extra, needle] : cases) {
+    auto bad = parse(R"({"name": "a", "type": "image"})", extra);
+    ASSERT_FALSE(bad.ok()) << extra;
+    EXPECT_NE(bad.message().find(needle), std::string::npos) << bad.message();
+  }
+}
+
 Rgba8 flat(int w, int h, std::uint8_t value) {
   return Rgba8{w, h, std::vector<std::uint8_t>(std::size_t(w * h * 4), value)};
 }

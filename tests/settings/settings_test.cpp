@@ -58,6 +58,18 @@ TEST(SettingsFields, LimitsAndMessages) {
   EXPECT_FALSE(check_value(*eta, kEtaFromLighting));
   EXPECT_FALSE(is_auto(*indirect_eta, kEtaFromLighting));
   EXPECT_EQ(*check_value(*indirect_eta, kEtaFromLighting), "must be > 1 (got 0)");
+  // Written as a number, the stored form of "auto" is refused: only the string selects it.
+  EXPECT_EQ(*check_number(*eta, kEtaFromLighting), "must be > 1 or \"auto\" (got 0)");
+  EXPECT_FALSE(check_number(*eta, 20.0));
+  EXPECT_EQ(*check_number(*order, 7), "must be in 3..6 (got 7)");
+  double named = -1.0;
+  EXPECT_FALSE(value_from_name(*eta, "auto", named));
+  EXPECT_EQ(named, double(kEtaFromLighting));
+  EXPECT_EQ(*value_from_name(*eta, "big", named), "unknown value \"big\" (expected a number or \"auto\")");
+  EXPECT_EQ(*value_from_name(*indirect_eta, "auto", named), "expected a number, not \"auto\"");
+  EXPECT_FALSE(value_from_name(*find_field("tonemap"), "reinhard", named));
+  EXPECT_EQ(named, double(Tonemap::reinhard));
+  EXPECT_EQ(*value_from_name(*find_field("tonemap"), "filmic", named), "unknown value \"filmic\"");
   EXPECT_EQ(*check_value(*tau, 0.0), "must be > 0 (got 0)");
   EXPECT_EQ(*check_value(*exposure, std::numeric_limits<double>::infinity()), "must be a finite number");
   EXPECT_FALSE(check_value(*exposure, -3.5));

@@ -185,6 +185,32 @@ TEST(ViewerScript, ParsesEveryEventKindAndNamesTheBadOne) {
   EXPECT_FALSE(parse_script("[1, 2]").ok());
 }
 
+// shadow_eta "auto" in a script's set event (as in scene files); 0, its stored form, is refused
+// as a number, and "auto" where a field has none names the field.
+TEST(ViewerScript, SetTakesAutoEtaAndRefusesItsStoredZero) {
+  auto script = parse_script(R"({"events": [{"t": 0, "set": {"shadow_eta": "auto"}}, {"t": 1, "set": {"shadow_eta": 20}}]})");
+  ASSERT_TRUE(script.ok()) << script.message();
+  ASSERT_EQ(script->events.size(), 2u);
+  ViewerCore core(scene::default_scene());
+  core.handle(script->events[0].event);
+  EXPECT_EQ(core.state().settings.shadow_eta, settings::kEtaFromLighting);
+  EXPECT_TRUE(core.state().message.empty()) << core.state().message;
+  core.handle(script->events[1].event);
+  EXPECT_EQ(core.state().settings.shadow_eta, 20.0f);
+
+  const std::pair<const char*, const char*> bad[] = {
+      {R"({"events": [{"t": 0, "set": {"shadow_eta": 0}}]})", "set.shadow_eta: shadow_eta: must be > 1 or \"auto\" (got 0)"},
+      {R"({"events": [{"t": 0, "set": {"shadow_eta": "big"}}]})", "unknown value \"big\" (expected a number or \"auto\")"},
+      {R"({"events": [{"t": 0, "set": {"indirect_eta": "auto"}}]})", "indirect_eta: expected a number, not \"auto\""},
+      {R"({"events": [{"t": 0, "set": {"tonemap": "filmic"}}]})", "tonemap: unknown value \"filmic\""},
+  };
+  for (const auto& [text, needle] : bad) {
+    auto parsed = parse_script(text);
+    ASSERT_FALSE(parsed.ok()) << text;
+    EXPECT_NE(parsed.message().find(needle), std::string::npos) << parsed.message();
+  }
+}
+
 }  // namespace
 }  // namespace proxygi::view
 
