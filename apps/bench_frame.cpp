@@ -36,6 +36,7 @@ struct BenchOptions {
   std::string indirect_method = "proxy";       // settings::kIndirectMethodNames
   int vsgl_lights = 1;                         // render.vsgl_lights (indirect_method vsgl)
   std::string vsgl_grouping = "vertex_ranges"; // settings::kVsglGroupingNames
+  std::string proxy_lod = "off";               // settings::kProxyLodNames (render.proxy_lod of every row)
   std::vector<std::string> only;               // empty: every row; else "default", "crowd", "baselines"
   bool runs(const std::string& part) const { return only.empty() || std::find(only.begin(), only.end(), part) != only.end(); }
 };
@@ -88,6 +89,8 @@ Result<ConfigResult> run_config(gpu::Context& context, const std::string& name,
   render.vsgl_lights = options.vsgl_lights;
   for (const auto& [text, value] : settings::kVsglGroupingNames)
     if (text == options.vsgl_grouping) render.vsgl_grouping = value;
+  for (const auto& [text, value] : settings::kProxyLodNames)
+    if (text == options.proxy_lod) render.proxy_lod = value;
   auto renderer = gpu::SceneRenderer::create(context, world, render, std::uint32_t(options.size),
                                              std::uint32_t(options.size));
   if (!renderer) return renderer.error();
@@ -181,6 +184,7 @@ int run_bench_frame(const BenchOptions& options) {
     out["indirect_method"] = options.indirect_method;
     out["vsgl_lights"] = options.vsgl_lights;
     out["vsgl_grouping"] = options.vsgl_grouping;
+    out["proxy_lod"] = options.proxy_lod;
     out["peak_resident_mib"] = peak_mib;
     if (has_default) out["speedup_quarter_over_full"] = k1 / k4;
     for (const auto& result : results) {
@@ -210,7 +214,7 @@ int run_bench_frame(const BenchOptions& options) {
               options.indirect_operator.c_str());
   if (options.indirect_method == "vsgl")
     std::printf(", %d lights per character by %s", options.vsgl_lights, options.vsgl_grouping.c_str());
-  std::printf("\n");
+  std::printf(", proxy_lod %s\n", options.proxy_lod.c_str());
   std::printf("%-8s %-6s %-7s %3s %9s %5s %7s %9s %6s |", "scene", "method", "splat", "k", "receivers", "chars",
               "proxies", "frame ms", "fps");
   for (std::size_t p = 0; p < std::size_t(gpu::FramePass::count); ++p)
@@ -261,6 +265,8 @@ void add_bench_frame_command(CLI::App& bench, CommandRunner& runner) {
                                              settings::kVsglLightsPerCharacter.end())));
   command->add_option("--vsgl-grouping", options->vsgl_grouping, "vsgl: vertex_ranges or bone_groups (render.vsgl_grouping)")
       ->check(CLI::IsMember({"vertex_ranges", "bone_groups"}));
+  command->add_option("--proxy-lod", options->proxy_lod, "Proxy levels of detail of every setting (render.proxy_lod)")
+      ->check(CLI::IsMember({"off", "auto"}));
   command->add_option("--only", options->only, "Rows to run (default: all): default, baselines, crowd")
       ->delimiter(',')
       ->check(CLI::IsMember({"default", "baselines", "crowd"}));

@@ -26,6 +26,7 @@
 #include "gpu/soft_gi_frame.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
+#include "world/proxy_lod.h"
 #include "world/world.h"
 
 namespace proxygi::gpu {
@@ -125,6 +126,8 @@ class SceneRenderer {
   const SoftGiFrame& frame() const { return *frame_; }
   const FrameConfig& config() const { return frame_->config(); }
   std::size_t proxy_count() const { return world_->proxy_count(); }
+  // render.proxy_lod auto: the levels and each instance's last choice (null before its first frame).
+  const world::ProxyLod* proxy_lod() const { return proxy_lod_.get(); }
   std::size_t frames_in_flight() const;
 
  private:
@@ -151,6 +154,8 @@ class SceneRenderer {
   std::unique_ptr<SoftGiFrame> frame_;
   std::unique_ptr<SkinPass> skin_pass_;
   world::WorldState state_;  // scratch: the state evaluated for the frame being prepared
+  std::unique_ptr<world::ProxyLod> proxy_lod_;  // render.proxy_lod auto: built on first use
+  std::vector<render::Sphere> lod_spheres_;     // scratch: the spheres it streams this frame
 
   struct SlotState {
     Context::InFlight in_flight;

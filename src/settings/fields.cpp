@@ -44,6 +44,7 @@ constexpr auto kExponentialChoices = choices_of(kExponentialNames);
 constexpr auto kUpsamplingChoices = choices_of(kUpsamplingNames);
 constexpr auto kSplatChoices = choices_of(kSplatMethodNames);
 constexpr auto kTonemapChoices = choices_of(kTonemapNames);
+constexpr auto kProxyLodChoices = choices_of(kProxyLodNames);
 
 template <auto Member>
 Field choice(std::string_view key, std::string_view description, Needs needs, std::span<const Choice> choices) {
@@ -130,6 +131,8 @@ const std::vector<Field>& table() {
       boolean<&S::ground_bounce>("ground_bounce", "light bounced off the lit ground onto receivers above it", kNeedTables),
       choice<&S::tonemap>("tonemap", "display curve", kNeedConstants, kTonemapChoices),
       real<&S::exposure_ev>("exposure_ev", "exposure in stops before the tonemap", kNeedConstants, -kInfinity, -8.0, 8.0),
+      choice<&S::proxy_lod>("proxy_lod", "proxy levels of detail: off (whole rigs) or auto (by projected size, cross-faded)",
+                            kNeedConstants, kProxyLodChoices),
   };
   return fields;
 }
@@ -139,11 +142,11 @@ const std::vector<Field>& table() {
 [[maybe_unused]] void every_member_has_a_row(const RenderSettings& settings) {
   const auto& [method, sh_order, receiver_scale, shadow_eta, indirect_eta, sh_window, indirect_operator, exponential,
                hyb_tau, upsampling, bilateral_depth_epsilon, splat, indirect_method, vsgl_lights, vsgl_grouping,
-               vsgl_sun, ground_bounce, tonemap, exposure_ev] = settings;
+               vsgl_sun, ground_bounce, tonemap, exposure_ev, proxy_lod] = settings;
   (void)method, (void)sh_order, (void)receiver_scale, (void)shadow_eta, (void)indirect_eta, (void)sh_window;
   (void)indirect_operator, (void)exponential, (void)hyb_tau, (void)upsampling, (void)bilateral_depth_epsilon;
   (void)splat, (void)indirect_method, (void)vsgl_lights, (void)vsgl_grouping, (void)vsgl_sun, (void)ground_bounce, (void)tonemap;
-  (void)exposure_ev;
+  (void)exposure_ev, (void)proxy_lod;
 }
 
 std::string show(double value) {

@@ -123,6 +123,7 @@ const Case kCases[] = {
     {R"({"render": {"method": "pixel"}})", "{}", "render.method: unknown value \"pixel\" (expected one of: image, vertex, ao)"},
     {R"({"render": {"splat": "mesh"}})", "{}", "render.splat: unknown value \"mesh\""},
     {R"({"render": {"tonemap": "filmic"}})", "{}", "render.tonemap: unknown value \"filmic\" (expected one of: aces, reinhard, clamp)"},
+    {R"({"render": {"proxy_lod": "on"}})", "{}", "render.proxy_lod: unknown value \"on\" (expected one of: off, auto)"},
     {R"({"render": {"sh_window": 1}})", "{}", "render.sh_window: expected true or false, got an integer"},
     {R"({"render": {"indirect": false, "indirect_method": "vsgl"}})", "{}", "render.indirect: give only \"indirect_method\" (\"indirect\" is its older boolean form)"},
     {R"({"render": {"indirect": 1}})", "{}", "render.indirect: expected true or false, got an integer"},
