@@ -37,6 +37,7 @@ struct BenchOptions {
   std::string indirect_method = "proxy";       // settings::kIndirectMethodNames
   int vsgl_lights = 1;                         // render.vsgl_lights (indirect_method vsgl)
   std::string vsgl_grouping = "vertex_ranges"; // settings::kVsglGroupingNames
+  std::string proxy_lod = "off";               // settings::kProxyLodNames (render.proxy_lod of every row)
   std::string antialiasing = "off";            // settings::kAntialiasingNames
   std::vector<std::string> only;               // empty: every row; else "default", "crowd", "baselines", "prt"
   bool runs(const std::string& part) const { return only.empty() || asked(part); }
@@ -93,6 +94,8 @@ Result<ConfigResult> run_config(gpu::Context& context, const std::string& name,
     if (text == options.vsgl_grouping) render.vsgl_grouping = value;
   for (const auto& [text, value] : settings::kAntialiasingNames)
     if (text == options.antialiasing) render.antialiasing = value;
+  for (const auto& [text, value] : settings::kProxyLodNames)
+    if (text == options.proxy_lod) render.proxy_lod = value;
   auto renderer = gpu::SceneRenderer::create(context, world, render, std::uint32_t(options.size),
                                              std::uint32_t(options.size));
   if (!renderer) return renderer.error();
@@ -205,6 +208,7 @@ int run_bench_frame(const BenchOptions& options) {
     out["vsgl_lights"] = options.vsgl_lights;
     out["vsgl_grouping"] = options.vsgl_grouping;
     out["antialiasing"] = options.antialiasing;
+    out["proxy_lod"] = options.proxy_lod;
     out["peak_resident_mib"] = peak_mib;
     if (has_default) out["speedup_quarter_over_full"] = k1 / k4;
     for (const auto& result : results) {
@@ -235,7 +239,7 @@ int run_bench_frame(const BenchOptions& options) {
   if (options.indirect_method == "vsgl")
     std::printf(", %d lights per character by %s", options.vsgl_lights, options.vsgl_grouping.c_str());
   if (options.antialiasing != "off") std::printf(", antialiasing %s", options.antialiasing.c_str());
-  std::printf("\n");
+  std::printf(", proxy_lod %s\n", options.proxy_lod.c_str());
   std::printf("%-8s %-6s %-7s %3s %9s %5s %7s %9s %6s |", "scene", "method", "splat", "k", "receivers", "chars",
               "proxies", "frame ms", "fps");
   for (std::size_t p = 0; p < std::size_t(gpu::FramePass::count); ++p)
@@ -288,6 +292,8 @@ void add_bench_frame_command(CLI::App& bench, CommandRunner& runner) {
       ->check(CLI::IsMember({"vertex_ranges", "bone_groups"}));
   command->add_option("--antialiasing", options->antialiasing, "Anti-aliasing of every setting (render.antialiasing)")
       ->check(CLI::IsMember({"off", "ssaa2", "ssaa4"}));
+  command->add_option("--proxy-lod", options->proxy_lod, "Proxy levels of detail of every setting (render.proxy_lod)")
+      ->check(CLI::IsMember({"off", "auto"}));
   command->add_option("--only", options->only,
                       "Rows to run (default: all but prt): default, baselines, crowd, prt (the wall corner at each "
                       "render.static_transfer)")

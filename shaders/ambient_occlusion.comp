@@ -67,6 +67,7 @@ void main() {
   float unoccluded = 1.0;
   for (uint t = 0u; t < tile_proxy_count; ++t) {
     vec4 sphere = proxies[tile_proxies[t]].center_radius;
+    float weight = proxies[tile_proxies[t]].albedo.w;  // the LOD cross-fade's share (1: whole)
     vec3 offset = sphere.xyz - p;
     float reach = eta * sphere.w;
     if (dot(offset, offset) >= reach * reach) continue;
@@ -74,7 +75,8 @@ void main() {
     float sine;
     if (!proxy_seen_from(p, normal, sphere.xyz, sphere.w, direction, sine) || sine <= minimum_sine) continue;
     float covered = influence_fade(sine, eta, rows) * sine * sine * max(dot(normal, direction), 0.0);
-    unoccluded *= 1.0 - clamp(covered, 0.0, 1.0);
+    float kept = 1.0 - clamp(covered, 0.0, 1.0);
+    unoccluded *= weight == 1.0 ? kept : pow(kept, weight);  // a fade: Π (1 − a_i)^w_i
   }
   int set = lighting_cube_set(p);
   vec3 unshadowed = kSqrtFourPi * vec3(lighting_lookup_dc(set, normal), lighting_lookup_dc(set + 1, normal),

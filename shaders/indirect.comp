@@ -127,7 +127,7 @@ void main() {
     vec3 radiance = vec3(0.0);
     for (int c = 0; c < 9; ++c)
       radiance += weights[c] * vec3(frame.irradiance_sh[c].x, frame.irradiance_sh[9 + c].x, frame.irradiance_sh[18 + c].x);
-    summed += proxies[i].albedo.rgb / kPi * max(radiance, vec3(0.0));
+    summed += proxies[i].albedo.w * (proxies[i].albedo.rgb / kPi * max(radiance, vec3(0.0)));
 #else
     float basis[9];
     sh_eval_basis_3(direction, basis);
@@ -155,10 +155,10 @@ void main() {
       kappa += ((l & 1) == 0 ? 1.0 : -1.0) * band_light;  // sqrt(4π/(2l+1)) K_l = (−1)^l
 #endif
     }
-    summed += proxies[i].albedo.rgb / kPi * max(kappa, vec3(0.0)) * max(seen_cosine, 0.0);
+    summed += proxies[i].albedo.w * (proxies[i].albedo.rgb / kPi * max(kappa, vec3(0.0)) * max(seen_cosine, 0.0));
 #endif
     float solid_angle = 2.0 * kPi * (1.0 - sqrt(max(1.0 - sine * sine, 0.0)));
-    solid_angle_sum += solid_angle * influence_fade(sine, eta, rows);
+    solid_angle_sum += solid_angle * influence_fade(sine, eta, rows) * proxies[i].albedo.w;  // w: the LOD fade's share
   }
   vec3 irradiance = vec3(0.0);
   if (solid_angle_sum > 0.0) {

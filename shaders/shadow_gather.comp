@@ -46,6 +46,7 @@ void main() {
     int rows = int(frame.log_table_rows);
     for (uint t = 0u; t < tile_proxy_count; ++t) {
       vec4 sphere = proxies[tile_proxies[t]].center_radius;
+      float weight = proxies[tile_proxies[t]].albedo.w;  // the LOD cross-fade's share (1: whole)
       // Cheap reject before the rules: outside the sphere of influence η·r.
       vec3 offset = sphere.xyz - p;
       float reach = frame.shadow_eta * sphere.w;
@@ -58,7 +59,7 @@ void main() {
       for (int l = 0; l < SH_ORDER; ++l) {
         float zonal;
         ZONAL_LOOKUP(log_table, rows, SH_ORDER, sine, l, zonal);
-        float scaled = zonal_scale(l) * zonal;
+        float scaled = zonal_scale(l) * zonal * weight;
         for (int m = -l; m <= l; ++m) f[l * (l + 1) + m] += scaled * basis[l * (l + 1) + m];
       }
     }

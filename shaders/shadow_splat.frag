@@ -23,6 +23,7 @@ layout(std430, set = 0, binding = kSplatBindLogTable) readonly buffer LogTable {
 layout(push_constant) uniform Push { SplatPush push; };
 
 layout(location = 0) flat in vec4 sphere;
+layout(location = 1) flat in float weight;
 
 layout(location = 0) out vec4 target0;
 #if TARGETS > 1
@@ -101,7 +102,7 @@ void main() {
   for (int l = 0; l < SH_ORDER; ++l) {
     float zonal;
     ZONAL_LOOKUP(log_table, rows, SH_ORDER, sine, l, zonal);
-    float scaled = zonal_scale(l) * zonal;
+    float scaled = zonal_scale(l) * zonal * weight;
     for (int m = -l; m <= l; ++m) f[l * (l + 1) + m] = scaled * basis[l * (l + 1) + m];
   }
 #if PROXYGI_SPLAT_PASSES(SH_ORDER) == 1

@@ -13,9 +13,11 @@ layout(std140, set = 0, binding = kSplatBindProxies) uniform Proxies { ProxySphe
 layout(std430, set = 0, binding = kSplatBindBoundingMesh) readonly buffer BoundingMesh { vec4 bounding_mesh[]; };  // triangle list
 
 layout(location = 0) flat out vec4 sphere;  // proxy center (m), radius (m)
+layout(location = 1) flat out float weight; // the LOD cross-fade's share of its log occlusion (1: whole)
 
 void main() {
   sphere = proxies[gl_InstanceIndex].center_radius;
+  weight = proxies[gl_InstanceIndex].albedo.w;
   vec3 world = sphere.xyz + (frame.shadow_eta * sphere.w) * bounding_mesh[gl_VertexIndex].xyz;
   gl_Position = frame.view_projection * vec4(world, 1.0);
 }

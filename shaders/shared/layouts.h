@@ -65,7 +65,7 @@ PROXYGI_CONST(float, kGroundBounceMinHeight, 0.001f);
 // One proxy sphere in world space, streamed every frame through the ring buffer.
 struct ProxySphere {
   vec4 center_radius;  // xyz center (m), w radius (m)
-  vec4 albedo;         // linear rgb, w unused
+  vec4 albedo;         // linear rgb, w the sphere's weight in the sums (render::Sphere::weight; 1 without LOD fades)
 };
 
 // Per-frame constants (uniform buffer, std140). Scalars come in groups of four so every group

@@ -209,13 +209,25 @@ Result<std::vector<DrawItem>> SceneRenderer::prepare(const FrameRequest& request
   view.eye = camera.eye;
   view.forward = glm::normalize(camera.target - camera.eye);
   view.debug_view = request.debug_view;
-  if (Status written = frame_->write_slot(slot, view, state->spheres); !written) return written.error();
+  // render.proxy_lod auto: each character's level by its size on screen (world/proxy_lod.h).
+  const std::vector<render::Sphere>* streamed = &state->spheres;
+  if (render.proxy_lod == settings::ProxyLod::automatic) {
+    if (!proxy_lod_) {
+      auto built = world::ProxyLod::build(*world_);
+      if (!built) return built.error();
+      proxy_lod_ = std::move(*built);
+    }
+    lod_spheres_.clear();
+    if (Status selected = proxy_lod_->select(*state, config.height, lod_spheres_); !selected) return selected.error();
+    streamed = &lod_spheres_;
+  }
+  if (Status written = frame_->write_slot(slot, view, *streamed); !written) return written.error();
 
   SlotState& current = slots_[slot];
-  current.spheres = state->spheres;
+  current.spheres = *streamed;
   current.time_s = state->time_s;
   current.statistics = {};
-  current.statistics.proxies = state->spheres.size();
+  current.statistics.proxies = streamed->size();
   current.statistics.cpu_prepare_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return draws;

@@ -27,6 +27,7 @@
 #include "prt/static_frame.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
+#include "world/proxy_lod.h"
 #include "world/world.h"
 
 namespace proxygi::gpu {
@@ -144,6 +145,8 @@ class SceneRenderer {
   const SoftGiFrame& frame() const { return *frame_; }
   const FrameConfig& config() const { return frame_->config(); }
   std::size_t proxy_count() const { return world_->proxy_count(); }
+  // render.proxy_lod auto: the levels and each instance's last choice (null before its first frame).
+  const world::ProxyLod* proxy_lod() const { return proxy_lod_.get(); }
   std::size_t frames_in_flight() const;
   const StaticTransferReport& static_transfer() const { return static_report_; }
   // The PRT field in use (null when none) and its records for the current lighting (twin tests).
@@ -181,6 +184,8 @@ class SceneRenderer {
   std::shared_ptr<const prt::StaticTransferField> static_field_;  // loaded once per SH order
   std::vector<float> static_records_;
   StaticTransferReport static_report_;
+  std::unique_ptr<world::ProxyLod> proxy_lod_;  // render.proxy_lod auto: built on first use
+  std::vector<render::Sphere> lod_spheres_;     // scratch: the spheres it streams this frame
 
   struct SlotState {
     Context::InFlight in_flight;

@@ -161,7 +161,7 @@ Status SoftGiFrame::write_slot(std::uint32_t slot, const FrameView& view, std::s
   auto* proxies = static_cast<gpu_layout::ProxySphere*>(slots_[slot].proxies.mapped());
   for (std::size_t i = 0; i < spheres.size(); ++i) {
     proxies[i].center_radius = glm::vec4(spheres[i].center, spheres[i].radius);
-    proxies[i].albedo = glm::vec4(spheres[i].albedo, 1.0f);
+    proxies[i].albedo = glm::vec4(spheres[i].albedo, spheres[i].weight);
   }
   return {};
 }

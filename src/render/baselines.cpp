@@ -54,7 +54,8 @@ AmbientOcclusionResult ambient_occlusion(const FrameTables& tables, const glm::v
     if (!seen || seen->sine <= minimum_sine) continue;
     const float covered = sh::influence_fade_weight(seen->sine, eta, tables.log_occlusion.rows) * seen->sine *
                           seen->sine * std::max(glm::dot(normal, seen->direction), 0.0f);
-    result.unoccluded *= 1.0f - std::clamp(covered, 0.0f, 1.0f);
+    const float kept = 1.0f - std::clamp(covered, 0.0f, 1.0f);
+    result.unoccluded *= sphere.weight == 1.0f ? kept : std::pow(kept, sphere.weight);  // a fade: Π (1 − a_i)^w_i
   }
   result.irradiance = glm::max(result.unoccluded * unshadowed_irradiance(tables, p, normal), glm::vec3(0.0f));
   return result;

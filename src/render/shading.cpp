@@ -18,11 +18,11 @@ constexpr float kSqrtFourPi = 3.5449077018110318f;
 float zonal_scale(int band) { return std::sqrt(4.0f * kPi / float(2 * band + 1)); }
 
 // f += rot(zonal, direction) for the first order² coefficients.
-void add_rotated(int order, std::span<const float> zonal, const glm::vec3& direction, std::span<float> f) {
+void add_rotated(int order, std::span<const float> zonal, const glm::vec3& direction, float weight, std::span<float> f) {
   float basis[36];
   sh::evaluate_basis(order, direction, std::span<float>(basis, std::size_t(order * order)));
   for (int l = 0; l < order; ++l) {
-    const float scaled = zonal_scale(l) * zonal[std::size_t(l)];
+    const float scaled = zonal_scale(l) * zonal[std::size_t(l)] * weight;
     for (int m = -l; m <= l; ++m) {
       const int i = l * (l + 1) + m;
       f[std::size_t(i)] += scaled * basis[i];
@@ -50,7 +50,7 @@ std::vector<float> accumulate_log_occlusion(const FrameTables& tables, const glm
     const auto seen = sh::proxy_at_receiver(p, normal, {sphere.center, sphere.radius});
     if (!seen || seen->sine <= minimum_sine) continue;
     tables.log_occlusion.lookup(seen->sine, std::span<float>(zonal, std::size_t(order)));
-    add_rotated(order, std::span<const float>(zonal, std::size_t(order)), seen->direction, f);
+    add_rotated(order, std::span<const float>(zonal, std::size_t(order)), seen->direction, sphere.weight, f);
   }
   return f;
 }
@@ -132,7 +132,7 @@ IndirectResult accumulate_indirect(const FrameTables& tables, const glm::vec3& p
       glm::vec3 radiance(0.0f);
       for (int i = 0; i < 9; ++i)
         for (int c = 0; c < 3; ++c) radiance[c] += weights[std::size_t(i)] * tables.irradiance_order3[std::size_t(c)][std::size_t(i)];
-      summed += sphere.albedo / kPi * glm::max(radiance, glm::vec3(0.0f));
+      summed += sphere.weight * (sphere.albedo / kPi * glm::max(radiance, glm::vec3(0.0f)));
     } else {
       float visibility[3];
       tables.proxy_visibility.lookup(seen->sine, std::span<float>(visibility, 3));
@@ -160,12 +160,12 @@ IndirectResult accumulate_indirect(const FrameTables& tables, const glm::vec3& p
         else
           kappa += scale * averaged[l] * band_light;
       }
-      summed += sphere.albedo / kPi * glm::max(kappa, glm::vec3(0.0f)) * std::max(seen_cosine, 0.0f);
+      summed += sphere.weight * (sphere.albedo / kPi * glm::max(kappa, glm::vec3(0.0f)) * std::max(seen_cosine, 0.0f));
     }
     // ω_i, faded like the tables so the normalization fades with them.
     const float solid_angle = 2.0f * kPi * (1.0f - std::sqrt(std::max(1.0f - seen->sine * seen->sine, 0.0f)));
     result.summed_solid_angle += solid_angle * sh::influence_fade_weight(seen->sine, tables.settings.indirect_eta,
-                                                                         tables.proxy_visibility.rows);
+                                                                         tables.proxy_visibility.rows) * sphere.weight;
   }
   if (result.summed_solid_angle > 0.0f) {
     // ξ_p = (V_p)_0 / (ω_p / √4π), V_p = 1 − O_p; clamped to [0, 1] so overlap never brightens.

@@ -19,10 +19,16 @@
 
 namespace proxygi::render {
 
+// One streamed proxy. `weight` scales everything the sphere adds to a receiver's sums (its log
+// occlusion, its bounce light and its solid angle ω_i; AO: the factor (1 − a_i)^weight), so a
+// cross-fade between two levels of detail A and B streams A with weight 1 − t and B with t and
+// the log sum is exactly (1 − t) Σ_A + t Σ_B (proxies/lod.h). 1 everywhere without proxy_lod:
+// × 1 is exact, so frames are what they were before weights existed.
 struct Sphere {
   glm::vec3 center{0.0f};  // world space, m
   float radius = 0.0f;     // m
   glm::vec3 albedo{0.0f};  // linear rgb
+  float weight = 1.0f;     // in [0, 1]
 };
 
 // Log occlusion at receiver (p, N) summed over every proxy (order = tables' order; n² floats).

@@ -46,6 +46,7 @@ constexpr auto kSplatChoices = choices_of(kSplatMethodNames);
 constexpr auto kTonemapChoices = choices_of(kTonemapNames);
 constexpr auto kStaticTransferChoices = choices_of(kStaticTransferNames);
 constexpr auto kAntialiasingChoices = choices_of(kAntialiasingNames);
+constexpr auto kProxyLodChoices = choices_of(kProxyLodNames);
 
 template <auto Member>
 Field choice(std::string_view key, std::string_view description, Needs needs, std::span<const Choice> choices) {
@@ -138,6 +139,8 @@ const std::vector<Field>& table() {
                                   kNeedPipelines | kNeedTables, kStaticTransferChoices),
       choice<&S::antialiasing>("antialiasing", "supersampling: shade f × f samples per pixel (ssaa2, ssaa4) and box-filter them, or off",
                                kNeedTargets | kNeedConstants, kAntialiasingChoices),
+      choice<&S::proxy_lod>("proxy_lod", "proxy levels of detail: off (whole rigs) or auto (by projected size, cross-faded)",
+                            kNeedConstants, kProxyLodChoices),
   };
   return fields;
 }
@@ -147,11 +150,12 @@ const std::vector<Field>& table() {
 [[maybe_unused]] void every_member_has_a_row(const RenderSettings& settings) {
   const auto& [method, sh_order, receiver_scale, shadow_eta, indirect_eta, sh_window, indirect_operator, exponential,
                hyb_tau, upsampling, bilateral_depth_epsilon, splat, indirect_method, vsgl_lights, vsgl_grouping,
-               vsgl_sun, ground_bounce, tonemap, exposure_ev, static_transfer, antialiasing] = settings;
+               vsgl_sun, ground_bounce, tonemap, exposure_ev, static_transfer, antialiasing,
+               proxy_lod] = settings;
   (void)method, (void)sh_order, (void)receiver_scale, (void)shadow_eta, (void)indirect_eta, (void)sh_window;
   (void)indirect_operator, (void)exponential, (void)hyb_tau, (void)upsampling, (void)bilateral_depth_epsilon;
   (void)splat, (void)indirect_method, (void)vsgl_lights, (void)vsgl_grouping, (void)vsgl_sun, (void)ground_bounce, (void)tonemap;
-  (void)exposure_ev, (void)static_transfer, (void)antialiasing;
+  (void)exposure_ev, (void)static_transfer, (void)antialiasing, (void)proxy_lod;
 }
 
 std::string show(double value) {

@@ -23,6 +23,7 @@ std::string_view name_of(IndirectOperator value) { return name_of(kIndirectOpera
 std::string_view name_of(IndirectMethod value) { return name_of(kIndirectMethodNames, value); }
 std::string_view name_of(VsglGrouping value) { return name_of(kVsglGroupingNames, value); }
 std::string_view name_of(VsglSun value) { return name_of(kVsglSunNames, value); }
+std::string_view name_of(ProxyLod value) { return name_of(kProxyLodNames, value); }
 std::string_view name_of(Exponential value) { return name_of(kExponentialNames, value); }
 std::string_view name_of(Upsampling value) { return name_of(kUpsamplingNames, value); }
 std::string_view name_of(SplatMethod value) { return name_of(kSplatMethodNames, value); }

@@ -67,6 +67,11 @@ enum class StaticTransfer { l0, ratio, l1 };
 // displayed colour averaged after the tonemap (the display of a mean radiance would let one
 // bright sample dominate an edge). Cost ≈ f² the frame; see README "Anti-aliasing".
 enum class Antialiasing { off, ssaa2, ssaa4 };
+// Levels of detail of the proxies (render.proxy_lod; proxies/lod.h):
+//   off   every character streams its whole fitted rig (frames as before the setting existed)
+//   auto  each character streams the nested level its projected size asks for, cross-faded in
+//         log space over kProxyLodFadeFrames frames when the level changes
+enum class ProxyLod { off, automatic };
 
 // Limits, defined once.
 inline constexpr int kMinShOrder = 3;  // SH order n: n bands, n² coefficients
@@ -80,6 +85,18 @@ inline constexpr std::array<int, 4> kVsglLightsPerCharacter = {1, 2, 4, 8};
 // where the tables are built (render::FrameTables::shadow_eta).
 inline constexpr float kEtaFromLighting = 0.0f;
 inline constexpr double kEtaCutoffError = 1.0 / 255.0;
+// proxy_lod auto (proxies/lod.h): a character whose bounding sphere projects to R pixels of
+// radius streams the coarsest level with at least R / kProxyLodPixelsPerSphere spheres; a change
+// of level waits until R passes the switch point by the hysteresis factor, then fades over
+// kProxyLodFadeFrames frames (of the scene's fps). The coarsest level has kProxyLodMinSpheres.
+// The fade is long because a level's bounding spheres shadow the contact band much more than the
+// rig does: a hard switch 32 → 16 or 16 → 8 of the mannequin moves a ground receiver by up to
+// 65 u (u = 1/255 of its unshadowed shade); over 192 frames no step exceeds 0.92 u, over 64
+// frames 2.7 u (tests/world/proxy_lod_test.cpp, on the CPU twins).
+inline constexpr float kProxyLodPixelsPerSphere = 4.0f;
+inline constexpr float kProxyLodHysteresis = 0.15f;  // switch at threshold × (1 ± this)
+inline constexpr int kProxyLodFadeFrames = 192;
+inline constexpr int kProxyLodMinSpheres = 8;
 
 struct RenderSettings {
   ShadingMethod method = ShadingMethod::image_space;
@@ -107,6 +124,7 @@ struct RenderSettings {
   float exposure_ev = 0.0f;     // radiance × 2^exposure_ev before the tonemap
   StaticTransfer static_transfer = StaticTransfer::l0;  // l0 until measured better (README)
   Antialiasing antialiasing = Antialiasing::off;
+  ProxyLod proxy_lod = ProxyLod::off;  // nested sphere levels by projected size (proxies/lod.h)
   bool operator==(const RenderSettings&) const = default;
 };
 
@@ -140,6 +158,7 @@ inline constexpr Name<StaticTransfer> kStaticTransferNames[] = {
 
 inline constexpr Name<Antialiasing> kAntialiasingNames[] = {
     {"off", Antialiasing::off}, {"ssaa2", Antialiasing::ssaa2}, {"ssaa4", Antialiasing::ssaa4}};
+inline constexpr Name<ProxyLod> kProxyLodNames[] = {{"off", ProxyLod::off}, {"auto", ProxyLod::automatic}};
 
 template <class Enum, std::size_t N>
 constexpr std::string_view name_of(const Name<Enum> (&table)[N], Enum value) {
@@ -158,5 +177,6 @@ std::string_view name_of(SplatMethod value);
 std::string_view name_of(Tonemap value);
 std::string_view name_of(StaticTransfer value);
 std::string_view name_of(Antialiasing value);
+std::string_view name_of(ProxyLod value);
 
 }  // namespace proxygi::settings

@@ -3,7 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "proxies/lod.h"
+#include "scene/scene_defaults.h"
+#include "settings/render_settings.h"
 #include "study/stability_sweep_parts.h"
+#include "world/proxy_lod.h"
 
 namespace proxygi::study {
 namespace {
@@ -99,6 +103,82 @@ std::vector<render::Sphere> block(const glm::vec3& origin, bool coarse) {
   return spheres;
 }
 
+// The mannequin's own levels (proxies/lod.h, world/proxy_lod.h) streamed as the frame streams
+// them (weighted spheres, render.proxy_lod auto): its walk pose at t = 0 carried 2 m along +x over
+// the same receivers, each level switched to the next at the middle frame, hard or faded over
+// settings::kProxyLodFadeFrames frames; the reference keeps the finer level throughout.
+void rig_lod_switch(SweepResult& sweep, const render::FrameTables& tables, const std::vector<glm::vec3>& points, int frames,
+                    const StabilityOptions& options) {
+  scene::Scene scene = scene::default_scene();
+  scene.characters[0].path.reset();
+  auto world = world::World::load(scene, {.assets_dir = options.assets_dir, .load_rigs = true, .write_rig_cache = false});
+  world::WorldState state;
+  if (!world || !(*world)->evaluate(0.0, std::nullopt, state)) {
+    sweep.notes.push_back("the mannequin's levels: its scene did not load");
+    return;
+  }
+  auto lod = world::ProxyLod::build(**world);
+  if (!lod) {
+    sweep.notes.push_back("the mannequin's levels: " + lod.message());
+    return;
+  }
+  const proxies::LodLevels& levels = (*lod)->models()[0].levels;
+  const std::vector<int> counts = levels.counts();
+  const int receivers = int(points.size()), switch_frame = frames / 2;
+  std::vector<std::vector<proxies::WorldSphere>> scratch;
+  auto shade = [&](int t, proxies::LodChoice choice, float fade) {
+    std::vector<proxies::WorldSphere> moved = state.instances[0].spheres;
+    for (auto& sphere : moved) sphere.center.x += 2.0f * float(t) / float(frames - 1);
+    std::vector<proxies::WeightedSphere> weighted;
+    proxies::append_lod_spheres(levels, choice, fade, moved, scratch, weighted);
+    std::vector<render::Sphere> spheres;
+    for (const auto& w : weighted) spheres.push_back({w.sphere.center, w.sphere.radius, w.sphere.albedo, w.weight});
+    ref::Plane out(receivers, 1), open(receivers, 1);
+    for (int i = 0; i < receivers; ++i) {
+      const glm::vec3& p = points[std::size_t(i)];
+      const MethodShade shaded = shade_log_sum(tables, kTau, render::accumulate_log_occlusion(tables, p, kUp, spheres), p, kUp);
+      count_output(sweep, shaded);
+      out.values[std::size_t(i)] = float(shaded.value);
+      open.values[std::size_t(i)] = float(shaded.unshadowed);
+    }
+    return std::pair{out, open};
+  };
+  const Reprojection same = Reprojection::identity(receivers, 1);
+  for (int level = 0; level + 1 < int(counts.size()); ++level) {
+    const std::string series = "mannequin " + std::to_string(counts[std::size_t(level)]) + " -> " +
+                               std::to_string(counts[std::size_t(level + 1)]) + " spheres";
+    std::vector<ref::Plane> reference;
+    double u = 0.0;
+    for (int t = 0; t < frames; ++t) {
+      auto [value, open] = shade(t, {level, level, 0}, 1.0f);
+      reference.push_back(value);
+      if (t == 0)
+        for (float v : open.values) u += v * kDisplayStep / double(receivers);
+    }
+    for (int fade : {0, settings::kProxyLodFadeFrames}) {
+      std::vector<ref::Plane> x;
+      for (int t = 0; t < frames; ++t) {
+        const int into = t - switch_frame + 1;  // frames into the fade (1 on the switch frame)
+        const proxies::LodChoice choice = into <= 0 ? proxies::LodChoice{level, level, 0}
+                                          : fade == 0 || into >= fade ? proxies::LodChoice{level + 1, level + 1, 0}
+                                                                      : proxies::LodChoice{level, level + 1, into};
+        x.push_back(shade(t, choice, choice.from == choice.to ? 1.0f : float(into) / float(fade)).first);
+      }
+      double worst = 0.0, mean = 0.0;
+      for (int t = 1; t + 1 < frames; ++t) {
+        const ref::Plane xs[3] = {x[std::size_t(t - 1)], x[std::size_t(t)], x[std::size_t(t + 1)]};
+        const ref::Plane rs[3] = {reference[std::size_t(t - 1)], reference[std::size_t(t)], reference[std::size_t(t + 1)]};
+        const ErrorSummary pop = pop_error(std::span<const ref::Plane, 3>(xs, 3), std::span<const ref::Plane, 3>(rs, 3), same, same);
+        worst = std::max(worst, pop.max / u);
+        mean += pop.mean / u / double(frames - 2);
+      }
+      const std::string method = fade == 0 ? "rig hard" : "rig fade" + std::to_string(fade);
+      add_point(sweep, method, series, fade, 0, worst);
+      add_point(sweep, method, series, fade, 1, mean);
+    }
+  }
+}
+
 SweepResult lod_switch(const StabilityOptions& options) {
   SweepResult sweep;
   sweep.id = "S8";
@@ -180,6 +260,7 @@ SweepResult lod_switch(const StabilityOptions& options) {
   }
   sweep.traces.push_back(std::move(reference_trace));
   sweep.trace_x_label = "frame (the switch at frame " + std::to_string(switch_frame) + ")";
+  if (!options.assets_dir.empty()) rig_lod_switch(sweep, tables, points, frames, options);
   return sweep;
 }
 

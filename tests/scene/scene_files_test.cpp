@@ -150,6 +150,7 @@ TEST(SceneFiles, RoundTripEveryForm) {
   s.static_meshes.push_back(m);
   s.render.tonemap = settings::Tonemap::clamp;
   s.render.exposure_ev = -0.7f;
+  s.render.proxy_lod = settings::ProxyLod::automatic;
   s.output.formats = {OutputFormat::mp4, OutputFormat::png, OutputFormat::exr};
   expect_round_trip(s, "a/b.json");
 

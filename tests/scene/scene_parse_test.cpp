@@ -49,7 +49,8 @@ constexpr const char* kFullScene = R"({
   "render": {"method": "vertex", "sh_order": 5, "receiver_scale": 2, "shadow_eta": 12, "indirect_eta": 8,
              "indirect_operator": "exact", "exponential": "ol", "hyb_tau": 0.5,
              "upsampling": "bilinear", "splat": "compute", "indirect_method": "none",
-             "tonemap": "reinhard", "exposure_ev": -1.5, "static_transfer": "l1"},
+             "tonemap": "reinhard", "exposure_ev": -1.5, "static_transfer": "l1",
+             "proxy_lod": "auto"},
   "output": {"width": 640, "height": 360, "fps": 30, "frames": {"first": 10, "last": 19},
              "formats": ["exr", "mp4"]}
 })";
@@ -145,6 +146,7 @@ TEST(SceneParse, EveryFieldOfTheFullScene) {
   EXPECT_EQ(r.tonemap, settings::Tonemap::reinhard);
   EXPECT_FLOAT_EQ(r.exposure_ev, -1.5f);
   EXPECT_EQ(r.static_transfer, settings::StaticTransfer::l1);
+  EXPECT_EQ(r.proxy_lod, settings::ProxyLod::automatic);
 
   const Output& o = s.output;
   EXPECT_EQ(o.width, 640);

@@ -126,6 +126,7 @@ const Case kCases[] = {
     {R"({"render": {"tonemap": "filmic"}})", "{}", "render.tonemap: unknown value \"filmic\" (expected one of: aces, reinhard, clamp)"},
     {R"({"render": {"antialiasing": "msaa4"}})", "{}", "render.antialiasing: unknown value \"msaa4\" (expected one of: off, ssaa2, ssaa4)"},
     {R"({"render": {"antialiasing": 2}})", "{}", "render.antialiasing: expected a string"},
+    {R"({"render": {"proxy_lod": "on"}})", "{}", "render.proxy_lod: unknown value \"on\" (expected one of: off, auto)"},
     {R"({"render": {"sh_window": 1}})", "{}", "render.sh_window: expected true or false, got an integer"},
     {R"({"render": {"indirect": false, "indirect_method": "vsgl"}})", "{}", "render.indirect: give only \"indirect_method\" (\"indirect\" is its older boolean form)"},
     {R"({"render": {"indirect": 1}})", "{}", "render.indirect: expected true or false, got an integer"},
