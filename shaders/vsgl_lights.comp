@@ -3,12 +3,14 @@
 //   kVsglStageSums: kVsglTrianglesPerInvocation triangles per invocation of one character draw
 //     (or of one index range of it, render.vsgl_lights > 1), each a diffuse VPL at the
 //     centroid x with normal n = normalize(n0 + n1 + n2), area A and flux Φ = albedo ·
-//     max(E(n), 0) · A (E = Σ L̃_i y_i(n) of frame.vsgl_sender_sh, unshadowed); the workgroup's VPLs are summed serially
+//     max(E(n), 0) · A · e (E = Σ L̃_i y_i(n) of frame.vsgl_sender_sh, unshadowed; e the mean of
+//     the vertices' sender exposures, ref/sender_exposure.h: 0 for a triangle buried inside another
+//     body part; 1 without an exposure buffer); the workgroup's VPLs are summed serially
 //     per invocation, then in a fixed tree (deterministic) into VsglPartial, positions relative
 //     to the group's first centroid.
 //   kVsglStageFit: invocation k sums the partials of light k in order (rsm_sums.comp's first,
 //     render.vsgl_sun), each shifted to the origin of the first with weight, and fits ξ_v, λ_v, c_v, μ_v, σ_v² (sh::fit_vsgl).
-// CPU twin: sh::add_light / sh::fit_vsgl (src/sh/vsgl.h).
+// CPU twin: sh::triangle_light / sh::add_light / sh::fit_vsgl (src/sh/vsgl.h).
 #extension GL_GOOGLE_include_directive : require
 #include "frame_common.glsl"
 #include "sh/sh_basis.glsl"
@@ -20,6 +22,7 @@ layout(std430, set = 0, binding = kVsglBindNormals) readonly buffer Normals { ve
 layout(std430, set = 0, binding = kVsglBindIndices) readonly buffer Indices { uint indices[]; };
 layout(std430, set = 0, binding = kVsglBindPartials) buffer Partials { VsglPartial partials[]; };
 layout(std430, set = 0, binding = kVsglBindLights) writeonly buffer Lights { uvec4 light_count; VsglLight lights[]; };
+layout(std430, set = 0, binding = kVsglBindExposure) readonly buffer Exposure { float exposure[]; };
 layout(push_constant) uniform Push { VsglLightsPush push; };
 
 shared vec4 shared_a[kVsglGroupSize];  // (w, w ξ̄)
@@ -49,7 +52,8 @@ void triangle_light(uint triangle, out vec3 center, out vec3 normal, out vec3 fl
   vec3 irradiance = vec3(0.0);
   for (int i = 0; i < 9; ++i)
     irradiance += basis[i] * vec3(frame.vsgl_sender_sh[i].x, frame.vsgl_sender_sh[9 + i].x, frame.vsgl_sender_sh[18 + i].x);
-  flux = push.base_color.rgb * max(irradiance, vec3(0.0)) * area;
+  float exposed = push.has_exposure != 0u ? (exposure[i0] + exposure[i1] + exposure[i2]) / 3.0 : 1.0;
+  flux = push.base_color.rgb * max(irradiance, vec3(0.0)) * area * exposed;
 }
 
 void sum_triangles() {

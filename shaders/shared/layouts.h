@@ -194,7 +194,7 @@ struct StaticTriangle {
 // ---- VSGL bounce light (render.indirect_method vsgl; sh/vsgl.h is the CPU twin) ----
 // vsgl_lights.comp stage 0: each character draw's triangles (or one of render.vsgl_lights index
 // ranges of them, each its own light) are diffuse VPLs (centroid, summed vertex normals, area,
-// flux = base color × max(E(N), 0) × area, E from irradiance_sh), summed per workgroup
+// flux = base color × max(E(N), 0) × area × the vertices' mean sender exposure, E from irradiance_sh), summed per workgroup
 // (kVsglGroupSize × kVsglTrianglesPerInvocation triangles) into one partial (positions relative
 // to the group's first centroid); stage 1: one invocation per light sums its partials in order (shifted to the
 // origin of its first) and fits the VSGL. indirect.comp:vsgl evaluates the lights per receiver.
@@ -231,7 +231,8 @@ struct VsglLightsPush {
   uint partial_count;    // stage 1: partials written
   uint light_count;      // stage 1: lights to fit (≤ kVsglMaxLights)
   uint first_triangle;   // stage 0: the draw's first triangle of this dispatch
-  uint padding1;
+  uint has_exposure;     // stage 0: 1 = scale each VPL by its vertices' mean exposure (binding
+                         // kVsglBindExposure), 0 = the draw has none (exposure 1)
 };
 
 // ---- the sun variant of VSGL (render.vsgl_sun; sh/vsgl_sun.h is the CPU twin) ----
@@ -316,6 +317,7 @@ PROXYGI_CONST(uint, kVsglBindNormals, 2u);
 PROXYGI_CONST(uint, kVsglBindIndices, 3u);
 PROXYGI_CONST(uint, kVsglBindPartials, 4u);
 PROXYGI_CONST(uint, kVsglBindLights, 5u);
+PROXYGI_CONST(uint, kVsglBindExposure, 6u);  // float per vertex (ref/sender_exposure.h)
 // rsm.vert/.frag
 PROXYGI_CONST(uint, kRsmBindFrame, 0u);
 PROXYGI_CONST(uint, kRsmBindPositions, 1u);

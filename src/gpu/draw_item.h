@@ -32,6 +32,9 @@ struct DrawItem {
   // (K + 1 entries, K = render.vsgl_lights). Empty: the lights take K index ranges of `indices`.
   const Buffer* vsgl_indices = nullptr;
   std::span<const std::uint32_t> vsgl_group_first;
+  // The sender exposure of each vertex (float, storage usage; ref/sender_exposure.h): each VPL's
+  // flux is scaled by its triangle's mean. Null: exposure 1 (test meshes, static meshes).
+  const Buffer* vsgl_exposure = nullptr;
   std::uint32_t vertex_count() const { return positions ? std::uint32_t(positions->size() / sizeof(glm::vec4)) : 0; }
   bool textured() const { return texture.view != VK_NULL_HANDLE && texture.sampler != VK_NULL_HANDLE; }
 };

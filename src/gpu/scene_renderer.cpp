@@ -191,6 +191,7 @@ Result<std::vector<DrawItem>> SceneRenderer::prepare(const FrameRequest& request
         draws.push_back({&mesh.primitives[i].world_positions, &mesh.primitives[i].world_normals, mesh.indices[i].get(),
                          mesh.index_counts[i], mesh.materials[i].base_color,
                          mesh.uvs[i].get(), mesh.materials[i].texture, int(index)});
+        draws.back().vsgl_exposure = mesh.vsgl_exposure[i].get();
         if (by_bone_group) {
           draws.back().vsgl_indices = &mesh.vsgl_orders[i]->indices;
           draws.back().vsgl_group_first = mesh.vsgl_orders[i]->first[lights_order];

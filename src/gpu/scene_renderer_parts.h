@@ -37,6 +37,7 @@ struct MeshDraw {
   std::vector<std::uint32_t> index_counts;
   std::vector<std::shared_ptr<const Buffer>> uvs;  // static TEXCOORD_0 per primitive; null when absent
   std::vector<std::shared_ptr<const VsglTriangleOrders>> vsgl_orders;  // per primitive
+  std::vector<std::shared_ptr<const Buffer>> vsgl_exposure;  // per primitive: float per vertex (ref/sender_exposure.h)
   std::vector<MaterialBinding> materials;
   std::vector<Buffer> palettes;         // skin matrices, one buffer per ring slot, host-visible
   std::vector<Buffer> normal_palettes;  // their inverse-transposes (anim::normal_matrix layout)

@@ -22,7 +22,8 @@ Result<VsglLightsPass> VsglLightsPass::create(const Context& context) {
   const ComputeBinding bindings[] = {
       {kVsglBindFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},    {kVsglBindPositions, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
       {kVsglBindNormals, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},  {kVsglBindIndices, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-      {kVsglBindPartials, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {kVsglBindLights, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+      {kVsglBindPartials, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {kVsglBindLights, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {kVsglBindExposure, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
   auto pipeline = make_compute_pipeline(context, "vsgl_lights.comp", bindings, sizeof(VsglLightsPush));
   if (!pipeline) return pipeline.error();
   VsglLightsPass pass;
@@ -37,6 +38,7 @@ std::vector<ResourceAccess> VsglLightsPass::accesses(const Inputs& in, const Out
     list.push_back(reads(draw.positions));
     list.push_back(reads(draw.normals));
     list.push_back(reads(draw.vsgl_group_first.empty() ? draw.indices : draw.vsgl_indices));
+    if (draw.vsgl_exposure) list.push_back(reads(draw.vsgl_exposure));
   }
   return list;
 }
@@ -88,9 +90,11 @@ void VsglLightsPass::record(const Context& context, VkCommandBuffer commands, co
         .storage_buffer(kVsglBindIndices, *range.indices)
         .storage_buffer(kVsglBindPartials, *out.partials)
         .storage_buffer(kVsglBindLights, *out.lights)
+        .storage_buffer(kVsglBindExposure, draw.vsgl_exposure ? *draw.vsgl_exposure : *draw.positions)  // unread without
         .push(context, commands, pipeline_);
     VsglLightsPush push{};
     push.base_color = draw.base_color;
+    push.has_exposure = draw.vsgl_exposure ? 1u : 0u;
     push.stage = kVsglStageSums;
     push.triangle_count = triangles;
     push.partial_offset = partial;
@@ -112,6 +116,7 @@ void VsglLightsPass::record(const Context& context, VkCommandBuffer commands, co
       .storage_buffer(kVsglBindIndices, *out.partials)
       .storage_buffer(kVsglBindPartials, *out.partials)
       .storage_buffer(kVsglBindLights, *out.lights)
+      .storage_buffer(kVsglBindExposure, *out.partials)
       .push(context, commands, pipeline_);
   VsglLightsPush push{};
   push.stage = kVsglStageFit;

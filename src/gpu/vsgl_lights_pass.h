@@ -5,11 +5,12 @@
 // triangles split into K index ranges or, render.vsgl_grouping bone_groups, the K bone groups of
 // DrawItem::vsgl_group_first), which indirect.comp:vsgl then
 // evaluates at every receiver. Recorded inside frame step 6 (its timing is the indirect pass's).
-//   inputs : frame constants (L̃ order 3), the draws' world positions, normals and indices
+//   inputs : frame constants (L̃ order 3), the draws' world positions, normals and indices, and
+//            their sender exposures (DrawItem::vsgl_exposure, ref/sender_exposure.h) where present
 //   outputs: partials (kVsglMaxPartials VsglPartial, scratch), lights (uvec4 count, then
 //            kVsglMaxLights VsglLight)
 // Sums are deterministic: a fixed tree per workgroup, partials summed in order per light.
-// CPU twin: sh::add_light / sh::fit_vsgl (the same VPLs from the same triangles).
+// CPU twin: sh::triangle_light / sh::add_light / sh::fit_vsgl (the same VPLs from the same triangles).
 #include <span>
 
 #include "base/result.h"

@@ -2,17 +2,34 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "image/image.h"
+#include "sh/basis.h"
 #include "sh/spherical_gaussian.h"
 
 namespace proxygi::sh {
-namespace {
-constexpr double kPi = std::numbers::pi;
-}
 
 double luminance(const glm::dvec3& rgb) { return image::rec709_luminance(rgb); }
+
+VirtualPointLight triangle_light(const glm::dvec3 (&positions)[3], const glm::dvec3 (&normals)[3],
+                                 const glm::dvec3& albedo, std::span<const std::array<float, 9>, 3> irradiance_order3,
+                                 const glm::dvec3& exposures) {
+  const glm::dvec3 face = glm::cross(positions[1] - positions[0], positions[2] - positions[0]);
+  const double area = 0.5 * glm::length(face);
+  const glm::dvec3 summed = normals[0] + normals[1] + normals[2];
+  VirtualPointLight vpl;
+  vpl.position = (positions[0] + positions[1] + positions[2]) / 3.0;
+  vpl.normal = glm::length(summed) > 0.0 ? glm::normalize(summed) : area > 0.0 ? face / (2.0 * area) : glm::dvec3(0, 1, 0);
+  double basis[9];
+  evaluate_basis<3>(vpl.normal, basis);
+  const double exposure = (exposures.x + exposures.y + exposures.z) / 3.0;
+  for (int c = 0; c < 3; ++c) {
+    double irradiance = 0.0;
+    for (int i = 0; i < 9; ++i) irradiance += basis[i] * double(irradiance_order3[std::size_t(c)][std::size_t(i)]);
+    vpl.flux[c] = albedo[c] * std::max(irradiance, 0.0) * area * exposure;
+  }
+  return vpl;
+}
 
 void add_light(VsglSums& sums, const VirtualPointLight& light, const glm::dvec3& origin) {
   const double w = luminance(light.flux);

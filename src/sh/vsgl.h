@@ -14,6 +14,7 @@
 // RGB: the weights w are the luminance of each VPL's flux (the geometry is one for all channels);
 // the amplitude c_v is kept per channel [DER].
 // Units: meters, flux in W (any radiometric unit: irradiance comes out in it per m²).
+#include <array>
 #include <optional>
 #include <span>
 
@@ -31,6 +32,15 @@ struct VirtualPointLight {
 
 // Rec. 709 luminance: the geometric weight w of a flux.
 double luminance(const glm::dvec3& rgb);
+
+// One triangle of a sender as vsgl_lights.comp forms its VPL: at the centroid, normal the
+// normalized sum of the vertex normals (the face normal when they cancel, +Y when degenerate too),
+// flux = albedo × max(E(n), 0) × area × exposure, E = Σ_i L̃_i y_i(n) (order 3, per channel, the
+// irradiance SH the frame hands the senders), exposure the mean of the vertices' sender exposures
+// (ref/sender_exposure.h; 1 when the draw has none).
+VirtualPointLight triangle_light(const glm::dvec3 (&positions)[3], const glm::dvec3 (&normals)[3],
+                                 const glm::dvec3& albedo, std::span<const std::array<float, 9>, 3> irradiance_order3,
+                                 const glm::dvec3& exposures = glm::dvec3(1.0));
 
 // The sums a VSGL is fitted from. Positions are relative to an origin the caller picks near the
 // VPLs (their variance is a difference of sums: a near origin keeps it from cancelling).

@@ -1,5 +1,5 @@
 // render.indirect_method vsgl on the GPU (vsgl_lights.comp, indirect.comp:vsgl) against its CPU
-// twin (sh/vsgl.h): two sender meshes (each K = 1 or 4 lights, by index range or by group: the
+// twin (sh/vsgl.h): two sender meshes (the first with per-vertex sender exposures; each K = 1 or 4 lights, by index range or by group: the
 // triangles reordered by anim::group_triangles, here with longitude sectors as the vertex groups)
 // over a ground plane under a directional sky. The fitted lights match the CPU fit of the same triangles, and the indirect
 // irradiance at sample receivers matches sh::vsgl_irradiance at the GPU's receivers (relative
@@ -27,6 +27,7 @@ struct Mesh {
   std::vector<std::uint32_t> indices;
   glm::vec4 albedo{1.0f};
   std::vector<int> sector;  // per vertex: its longitude φ as a fraction of a turn, times 1000
+  std::vector<float> exposure;  // per vertex sender exposure (DrawItem::vsgl_exposure); empty: none
 };
 
 Mesh uv_sphere(const glm::vec3& center, float radius, int rings, int segments, const glm::vec4& albedo) {
@@ -61,26 +62,18 @@ sh::RgbSh sky() {
 using Order3 = std::array<std::array<float, 9>, 3>;
 
 // The CPU twin of vsgl_lights.comp's sums: the same VPLs from the same triangles (triangles
-// [first, last) of `indices`) lit by `irradiance` (L̃), added to `sums` relative to `origin`.
+// [first, last) of `indices`, sh::triangle_light, each scaled by its vertices' mean exposure when
+// the mesh has exposures) lit by `irradiance` (L̃), added to `sums` relative to `origin`.
 void add_cpu_sums(sh::VsglSums& sums, const glm::dvec3& origin, const Mesh& mesh, std::span<const std::uint32_t> indices,
                   const Order3& irradiance_order3, std::size_t first, std::size_t last) {
   for (std::size_t t = 3 * first; t < 3 * last; t += 3) {
-    const glm::dvec3 p0(mesh.positions[indices[t]]), p1(mesh.positions[indices[t + 1]]),
-        p2(mesh.positions[indices[t + 2]]);
-    const glm::dvec3 summed = glm::dvec3(mesh.normals[indices[t]]) + glm::dvec3(mesh.normals[indices[t + 1]]) +
-                              glm::dvec3(mesh.normals[indices[t + 2]]);
-    sh::VirtualPointLight vpl;
-    vpl.position = (p0 + p1 + p2) / 3.0;
-    vpl.normal = glm::normalize(summed);
-    const double area = 0.5 * glm::length(glm::cross(p1 - p0, p2 - p0));
-    double basis[9];
-    sh::evaluate_basis<3>(vpl.normal, basis);
-    for (int c = 0; c < 3; ++c) {
-      double irradiance = 0.0;
-      for (int i = 0; i < 9; ++i) irradiance += basis[i] * irradiance_order3[std::size_t(c)][std::size_t(i)];
-      vpl.flux[c] = double(mesh.albedo[c]) * std::max(irradiance, 0.0) * area;
+    glm::dvec3 x[3], n[3], e(1.0);
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t v = indices[t + std::size_t(k)];
+      x[k] = glm::dvec3(mesh.positions[v]), n[k] = glm::dvec3(mesh.normals[v]);
+      if (!mesh.exposure.empty()) e[k] = mesh.exposure[v];
     }
-    sh::add_light(sums, vpl, origin);
+    sh::add_light(sums, sh::triangle_light(x, n, glm::dvec3(glm::vec3(mesh.albedo)), irradiance_order3, e), origin);
   }
 }
 
@@ -110,8 +103,15 @@ TEST_P(VsglPassLights, LightsAndIrradianceMatchTheCpuTwin) {
   const render::FrameTables tables = render::make_frame_tables(sky(), config.render);
   const testing::GroundMesh ground = testing::ground_plane(20.0f, 4);
   // 40 × 40 × 2 triangles: more than one workgroup of partials per light.
-  const Mesh senders[] = {uv_sphere({0.0f, 0.6f, 0.0f}, 0.5f, 40, 40, {0.9f, 0.2f, 0.1f, 1.0f}),
-                          uv_sphere({1.3f, 0.35f, 0.6f}, 0.3f, 12, 16, {0.1f, 0.3f, 0.9f, 1.0f})};
+  Mesh senders[] = {uv_sphere({0.0f, 0.6f, 0.0f}, 0.5f, 40, 40, {0.9f, 0.2f, 0.1f, 1.0f}),
+                    uv_sphere({1.3f, 0.35f, 0.6f}, 0.3f, 12, 16, {0.1f, 0.3f, 0.9f, 1.0f})};
+  // The first sender has sender exposures (ref/sender_exposure.h): 0 below (buried), rising with
+  // the longitude elsewhere; the second has none (exposure 1).
+  for (std::size_t v = 0; v < senders[0].positions.size(); ++v)
+    senders[0].exposure.push_back(senders[0].normals[v].y < -0.3f ? 0.0f : 0.3f + 0.7f * float(senders[0].sector[v]) / 1000.0f);
+  auto exposure = create_buffer_with_data(context(), as_bytes(std::span<const float>(senders[0].exposure)),
+                                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  ASSERT_TRUE(exposure.ok());
   std::vector<StaticMesh> meshes;
   auto ground_mesh = upload_static_mesh(context(), ground.positions, ground.normals, ground.indices, glm::vec4(0.8f));
   ASSERT_TRUE(ground_mesh.ok());
@@ -137,6 +137,7 @@ TEST_P(VsglPassLights, LightsAndIrradianceMatchTheCpuTwin) {
   for (std::size_t i = 0; i < meshes.size(); ++i) {
     draws.push_back(meshes[i].draw());
     draws.back().vsgl_light = int(i) - 1;  // the ground sends nothing
+    if (i == 1) draws.back().vsgl_exposure = &*exposure;
     if (by_group && i > 0) {
       draws.back().vsgl_indices = &grouped_buffers[i - 1];
       draws.back().vsgl_group_first = grouped[i - 1].first;
@@ -155,6 +156,7 @@ TEST_P(VsglPassLights, LightsAndIrradianceMatchTheCpuTwin) {
   ASSERT_TRUE(lights.ok());
   ASSERT_EQ(lights->size(), 2u * std::size_t(per_sender));
   std::vector<sh::Vsgl> cpu;
+  int unexposed_lights = 0;
   for (std::size_t k = 0; k < lights->size(); ++k) {
     const std::size_t sender = k / std::size_t(per_sender), range = k % std::size_t(per_sender);
     const Mesh& mesh = senders[sender];
@@ -163,10 +165,14 @@ TEST_P(VsglPassLights, LightsAndIrradianceMatchTheCpuTwin) {
                                          grouped[sender].first[range + 1])
                              : cpu_light(mesh, mesh.indices, tables, range * triangles / std::size_t(per_sender),
                                          (range + 1) * triangles / std::size_t(per_sender));
-    ASSERT_TRUE(expected);
-    cpu.push_back(*expected);
     const gpu_layout::VsglLight& gpu = (*lights)[k];
     SCOPED_TRACE("light " + std::to_string(k));
+    if (!expected) {  // every triangle of the light has exposure 0 (sender 0's lowest rows): no light
+      ++unexposed_lights;
+      EXPECT_EQ(glm::vec3(gpu.amplitude), glm::vec3(0.0f));
+      continue;
+    }
+    cpu.push_back(*expected);
     EXPECT_LE(glm::length(glm::dvec3(gpu.axis_sharpness) - expected->axis), 1e-3);
     EXPECT_NEAR(gpu.axis_sharpness.w, expected->sharpness, 1e-3 * expected->sharpness + 1e-6);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(gpu.amplitude[c], expected->amplitude[c], 1e-3 * expected->amplitude[c]);
@@ -198,6 +204,8 @@ TEST_P(VsglPassLights, LightsAndIrradianceMatchTheCpuTwin) {
       if (glm::length(expected) > 1e-2) ++lit;
     }
   EXPECT_GE(checked, 200);
+  // By index range with K = 4, sender 0's last quarter is its rows below θ = 3π/4: all exposure 0.
+  EXPECT_EQ(unexposed_lights, per_sender == 4 && !by_group ? 1 : 0);
   EXPECT_GE(lit, 100) << "the samples must include receivers lit by the lights";
 }
 
