@@ -87,6 +87,15 @@ SweepResult influence_fade(const StabilityOptions& options) {
   return sweep;
 }
 
+// The pop error at frame t (the second difference over frames t − 1, t, t + 1) of x against the
+// reference, both on the same static receivers.
+ErrorSummary pop_at(const std::vector<ref::Plane>& x, const std::vector<ref::Plane>& reference, int t,
+                    const Reprojection& same) {
+  const ref::Plane xs[3] = {x[std::size_t(t - 1)], x[std::size_t(t)], x[std::size_t(t + 1)]};
+  const ref::Plane rs[3] = {reference[std::size_t(t - 1)], reference[std::size_t(t)], reference[std::size_t(t + 1)]};
+  return pop_error(std::span<const ref::Plane, 3>(xs, 3), std::span<const ref::Plane, 3>(rs, 3), same, same);
+}
+
 // A "character" of 64 spheres (a 4 x 4 x 4 block) and its 8-sphere LOD (one sphere per 2 x 2 x 2
 // octant, radius 2r: the same volume up to packing).
 std::vector<render::Sphere> block(const glm::vec3& origin, bool coarse) {
@@ -166,9 +175,7 @@ void rig_lod_switch(SweepResult& sweep, const render::FrameTables& tables, const
       }
       double worst = 0.0, mean = 0.0;
       for (int t = 1; t + 1 < frames; ++t) {
-        const ref::Plane xs[3] = {x[std::size_t(t - 1)], x[std::size_t(t)], x[std::size_t(t + 1)]};
-        const ref::Plane rs[3] = {reference[std::size_t(t - 1)], reference[std::size_t(t)], reference[std::size_t(t + 1)]};
-        const ErrorSummary pop = pop_error(std::span<const ref::Plane, 3>(xs, 3), std::span<const ref::Plane, 3>(rs, 3), same, same);
+        const ErrorSummary pop = pop_at(x, reference, t, same);
         worst = std::max(worst, pop.max / u);
         mean += pop.mean / u / double(frames - 2);
       }
@@ -233,9 +240,7 @@ SweepResult lod_switch(const StabilityOptions& options) {
     double worst = 0.0, mean = 0.0;
     SweepTrace pops{"pop |a_t(x) - a_t(r)|, max over receivers (u)", method, {}, {}};
     for (int t = 1; t + 1 < frames; ++t) {
-      const ref::Plane xs[3] = {x[std::size_t(t - 1)], x[std::size_t(t)], x[std::size_t(t + 1)]};
-      const ref::Plane rs[3] = {reference[std::size_t(t - 1)], reference[std::size_t(t)], reference[std::size_t(t + 1)]};
-      const ErrorSummary pop = pop_error(std::span<const ref::Plane, 3>(xs, 3), std::span<const ref::Plane, 3>(rs, 3), same, same);
+      const ErrorSummary pop = pop_at(x, reference, t, same);
       worst = std::max(worst, pop.max / u);
       mean += pop.mean / u / double(frames - 2);
       pops.x.push_back(t), pops.y.push_back(pop.max / u);
