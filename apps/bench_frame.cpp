@@ -118,6 +118,8 @@ Result<ConfigResult> run_config(gpu::Context& context, const std::string& name,
     if (!timings) return timings.error();
     for (std::size_t p = 0; p < timings->milliseconds.size(); ++p)
       result.passes.milliseconds[p] += timings->milliseconds[p] / options.frames;
+    for (std::size_t p = 0; p < timings->cpu_milliseconds.size(); ++p)
+      result.passes.cpu_milliseconds[p] += timings->cpu_milliseconds[p] / options.frames;
     result.passes.cpu_prepare_ms += timings->cpu_prepare_ms / options.frames;
     result.passes.proxies = timings->proxies;
   }
@@ -225,6 +227,8 @@ int run_bench_frame(const BenchOptions& options) {
                               {"shadow_pairs_per_second", result.pairs_per_second}};
       for (std::size_t p = 0; p < result.passes.milliseconds.size(); ++p)
         entry["pass_ms"][gpu::frame_pass_name(gpu::FramePass(p))] = result.passes.milliseconds[p];
+      for (std::size_t p = 0; p < result.passes.cpu_milliseconds.size(); ++p)
+        entry["pass_cpu_ms"][gpu::frame_pass_name(gpu::FramePass(p))] = result.passes.cpu_milliseconds[p];
       if (result.splat == "raster")
         entry["raster_splat_stage_ms"] = {{"depth", result.raster_stages.depth_ms},
                                           {"resolve", result.raster_stages.resolve_ms}};

@@ -44,9 +44,9 @@ struct SkinPush {
   uint has_normals;          // 0: normals are not skinned (output left untouched)
   uint use_normal_matrices;  // 0: mat3(skin matrix) as in the CPU fast path
   uint morph_targets;        // 0: no morphing (delta and weight buffers not read)
+  uint joints;               // palette matrices per instance (instance i reads i × joints ..)
+  uint instance_stride;      // output vertices per instance (≥ vertex_count; i × stride ..)
   uint padding0;
-  uint padding1;
-  uint padding2;
 };
 
 // ---- the soft-GI frame (gbuffer, receivers, shadow_gather, exponentiate, indirect, upsample,

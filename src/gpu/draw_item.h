@@ -35,7 +35,18 @@ struct DrawItem {
   // The sender exposure of each vertex (float, storage usage; ref/sender_exposure.h): each VPL's
   // flux is scaled by its triangle's mean. Null: exposure 1 (test meshes, static meshes).
   const Buffer* vsgl_exposure = nullptr;
-  std::uint32_t vertex_count() const { return positions ? std::uint32_t(positions->size() / sizeof(glm::vec4)) : 0; }
+  // The draw's vertices in `positions` and `normals` (its instance's range of its model's skin
+  // outputs, gpu/skin_pass.h SkinBatch): first_vertex .., with first_vertex × 16 bytes a
+  // multiple of minStorageBufferOffsetAlignment; vertices 0: the whole buffers. Passes bind that
+  // range (vertex_bytes), so their shaders index the draw's vertices from 0.
+  std::uint32_t first_vertex = 0;
+  std::uint32_t vertices = 0;
+  std::uint32_t vertex_count() const {
+    return vertices > 0 ? vertices : positions ? std::uint32_t(positions->size() / sizeof(glm::vec4)) : 0;
+  }
+  BufferRange vertex_bytes() const {
+    return {VkDeviceSize(first_vertex) * sizeof(glm::vec4), VkDeviceSize(vertex_count()) * sizeof(glm::vec4)};
+  }
   bool textured() const { return texture.view != VK_NULL_HANDLE && texture.sampler != VK_NULL_HANDLE; }
 };
 

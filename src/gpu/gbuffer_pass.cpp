@@ -89,8 +89,8 @@ void GbufferPass::record(const Context& context, VkCommandBuffer commands, const
       bound = true;
       DescriptorPush descriptors;
       descriptors.uniform_buffer(kGbufferBindFrame, *in.constants)
-          .storage_buffer(kGbufferBindPositions, *draw.positions)
-          .storage_buffer(kGbufferBindNormals, *draw.normals)
+          .storage_buffer(kGbufferBindPositions, *draw.positions, draw.vertex_bytes())
+          .storage_buffer(kGbufferBindNormals, *draw.normals, draw.vertex_bytes())
           .storage_buffer(kGbufferBindUvs, draw.uvs ? *draw.uvs : *draw.positions);  // not read without uvs
       if (textured) descriptors.sampled_image(kGbufferBindBaseColorTexture, draw.texture.view, draw.texture.sampler);
       if (vertex_irradiance_) descriptors.storage_buffer(kGbufferBindShaded, *in.shaded);

@@ -216,6 +216,11 @@ DescriptorPush& DescriptorPush::storage_buffer(std::uint32_t binding, const Buff
   return *this;
 }
 
+DescriptorPush& DescriptorPush::storage_buffer(std::uint32_t binding, const Buffer& buffer, const BufferRange& range) {
+  writes_.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, {buffer.handle(), range.offset, range.size}, {}});
+  return *this;
+}
+
 DescriptorPush& DescriptorPush::uniform_buffer(std::uint32_t binding, const Buffer& buffer) {
   writes_.push_back({binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, {buffer.handle(), 0, VK_WHOLE_SIZE}, {}});
   return *this;

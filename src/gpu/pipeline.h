@@ -10,6 +10,7 @@
 #include <vulkan/vulkan.h>
 
 #include "base/result.h"
+#include "gpu/resources.h"
 
 namespace proxygi::gpu {
 
@@ -97,6 +98,9 @@ class Pipeline {
 class DescriptorPush {
  public:
   DescriptorPush& storage_buffer(std::uint32_t binding, const Buffer& buffer);
+  // Bytes range.offset .. + range.size of the buffer (offset: a multiple of the device's
+  // minStorageBufferOffsetAlignment).
+  DescriptorPush& storage_buffer(std::uint32_t binding, const Buffer& buffer, const BufferRange& range);
   DescriptorPush& uniform_buffer(std::uint32_t binding, const Buffer& buffer);
   DescriptorPush& sampled_image(std::uint32_t binding, VkImageView view, VkSampler sampler,
                                 VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);

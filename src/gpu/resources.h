@@ -19,6 +19,12 @@ enum class MemoryKind {
   host_visible,  // mapped, coherent: per-frame uploads (ring buffers) and readback
 };
 
+// Bytes offset .. offset + size of a buffer (VK_WHOLE_SIZE: to its end).
+struct BufferRange {
+  VkDeviceSize offset = 0;
+  VkDeviceSize size = VK_WHOLE_SIZE;
+};
+
 class Buffer {
  public:
   static Result<Buffer> create(const Context& context, VkDeviceSize size, VkBufferUsageFlags usage, MemoryKind memory);

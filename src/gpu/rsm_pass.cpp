@@ -70,8 +70,8 @@ void RsmPass::record(const Context& context, VkCommandBuffer commands, const Inp
     const DrawItem& draw = in.draws[range.draw];
     DescriptorPush()
         .uniform_buffer(kRsmBindFrame, *in.constants)
-        .storage_buffer(kRsmBindPositions, *draw.positions)
-        .storage_buffer(kRsmBindNormals, *draw.normals)
+        .storage_buffer(kRsmBindPositions, *draw.positions, draw.vertex_bytes())
+        .storage_buffer(kRsmBindNormals, *draw.normals, draw.vertex_bytes())
         .push(context, commands, raster_);
     RsmPush push{};
     push.base_color = draw.base_color;

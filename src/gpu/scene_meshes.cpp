@@ -1,5 +1,7 @@
-// SceneRenderer's GPU meshes: every instance's primitives uploaded once in bind pose for the skin
-// pass (with a palette per ring slot), the ground and the static meshes in world space.
+// SceneRenderer's GPU meshes: every model's primitives uploaded once in bind pose for the skin
+// pass, skinned for all the model's instances in one dispatch per primitive (SkinGroup, with
+// palettes per ring slot), the ground and the static meshes in world space.
+#include <algorithm>
 #include <cstring>
 #include <map>
 #include <tuple>
@@ -49,6 +51,11 @@ Status SceneRenderer::upload_instances() {
     model_textures_.push_back(std::make_unique<ModelTextures>(ModelTextures{model.get(), std::move(*textures)}));
   }
   instances_.clear();
+  skin_groups_.clear();
+  // Per model mesh node, its SkinGroup (index into skin_groups_), made at its first instance.
+  std::map<std::pair<const world::Model*, std::size_t>, std::size_t> group_of;
+  std::map<const world::Model*, std::uint32_t> model_instances;
+  for (const world::CharacterInstance& source : world_->instances()) ++model_instances[source.model];
   // Index, uv and bind-pose buffers depend only on the model's primitive: uploaded once per model
   // and shared by its instances (the crowd's 20 mannequins hold one copy).
   struct Shared {
@@ -87,7 +94,32 @@ Status SceneRenderer::upload_instances() {
       draw.node = int(node);
       draw.skin = n.skin;
       const std::size_t palette_size = n.skin >= 0 ? character.skins[std::size_t(n.skin)].joints.size() : 1;
-      draw.palette_joints = std::uint32_t(palette_size);
+      const bool first_instance = !group_of.contains({source.model, node});
+      if (first_instance) {
+        group_of[{source.model, node}] = skin_groups_.size();
+        SkinGroup& group = skin_groups_.emplace_back();
+        group.palette_joints = std::uint32_t(palette_size);
+        group.morph_targets = std::uint32_t(std::max(anim::morph_target_count(character, int(node)), 0));
+        const std::uint32_t count = model_instances[source.model];
+        for (std::uint32_t slot = 0; slot < slots; ++slot) {
+          for (auto* palettes : {&group.palettes, &group.normal_palettes}) {
+            auto palette = Buffer::create(context_, count * palette_size * sizeof(glm::mat4), SkinPass::kPaletteUsage,
+                                          MemoryKind::host_visible);
+            if (!palette) return palette.error();
+            palettes->push_back(std::move(*palette));
+          }
+          if (group.morph_targets > 0) {
+            auto weights = Buffer::create(context_, std::size_t(count) * group.morph_targets * sizeof(float),
+                                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryKind::host_visible);
+            if (!weights) return weights.error();
+            group.morph_weights.push_back(std::move(*weights));
+          }
+        }
+      }
+      draw.group = group_of[{source.model, node}];
+      SkinGroup& group = skin_groups_[draw.group];
+      draw.group_instance = group.instances++;
+      std::size_t primitive_index = 0;
       for (const anim::Primitive& original : character.meshes[std::size_t(n.mesh)].primitives) {
         anim::Primitive primitive = original;
         if (n.skin < 0 || primitive.influences_per_vertex < 1) {  // rigid: one joint, the node itself
@@ -95,11 +127,22 @@ Status SceneRenderer::upload_instances() {
           primitive.joints.assign(primitive.positions.size(), 0);
           primitive.weights.assign(primitive.positions.size(), 1.0f);
         }
-        Shared& buffers = shared[{source.model, node, draw.index_counts.size()}];
-        auto uploaded = buffers.bind_pose ? SkinPass::instantiate(context_, buffers.bind_pose)
-                                          : SkinPass::upload(context_, primitive);
-        if (uploaded && !buffers.bind_pose) buffers.bind_pose = uploaded->bind_pose;
-        if (!uploaded) return uploaded.error();
+        Shared& buffers = shared[{source.model, node, primitive_index++}];
+        if (first_instance) {
+          auto uploaded = SkinPass::upload_bind_pose(context_, primitive);
+          if (!uploaded) return uploaded.error();
+          buffers.bind_pose = std::move(*uploaded);
+          SkinGroup::Primitive& out = group.primitives.emplace_back();
+          out.bind_pose = buffers.bind_pose;
+          out.instance_stride = SkinPass::instance_stride(context_, buffers.bind_pose->vertex_count);
+          const VkDeviceSize bytes = VkDeviceSize(model_instances[source.model]) * out.instance_stride * sizeof(glm::vec4);
+          const VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+          for (Buffer* target : {&out.world_positions, &out.world_normals}) {
+            auto buffer = Buffer::create(context_, bytes, usage, MemoryKind::device_local);
+            if (!buffer) return buffer.error();
+            *target = std::move(*buffer);
+          }
+        }
         if (!buffers.indices) {
           // Storage too: the VSGL lights pass reads the triangles (indirect_method vsgl).
           auto indices = create_buffer_with_data(context_, as_bytes(std::span<const std::uint32_t>(primitive.indices)),
@@ -125,7 +168,6 @@ Status SceneRenderer::upload_instances() {
           buffers.vsgl_exposure = std::make_shared<const Buffer>(std::move(*exposed));
         }
         ++posed_primitive;
-        draw.primitives.push_back(std::move(*uploaded));
         draw.indices.push_back(buffers.indices);
         draw.index_counts.push_back(std::uint32_t(primitive.indices.size()));
         draw.uvs.push_back(buffers.uvs);
@@ -133,21 +175,7 @@ Status SceneRenderer::upload_instances() {
         draw.vsgl_exposure.push_back(buffers.vsgl_exposure);
         draw.materials.push_back(textures->binding(primitive.material));
       }
-      for (std::uint32_t slot = 0; slot < slots; ++slot)
-        for (auto* palettes : {&draw.palettes, &draw.normal_palettes}) {
-          auto palette = Buffer::create(context_, palette_size * sizeof(glm::mat4), SkinPass::kPaletteUsage,
-                                        MemoryKind::host_visible);
-          if (!palette) return palette.error();
-          palettes->push_back(std::move(*palette));
-        }
       draw.morph_offset = std::size_t(anim::morph_weight_offset(character, int(node)));
-      if (const int targets = anim::morph_target_count(character, int(node)); targets > 0)
-        for (std::uint32_t slot = 0; slot < slots; ++slot) {
-          auto weights = Buffer::create(context_, std::size_t(targets) * sizeof(float),
-                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryKind::host_visible);
-          if (!weights) return weights.error();
-          draw.morph_weights.push_back(std::move(*weights));
-        }
       instance->meshes.push_back(std::move(draw));
     }
     instances_.push_back(std::move(instance));
@@ -201,16 +229,22 @@ Status SceneRenderer::upload_static_meshes() {
 }
 
 Result<std::vector<std::vector<std::vector<glm::vec3>>>> SceneRenderer::read_skinned_positions() const {
+  // Each group primitive's outputs read back once: every instance's range of them.
+  std::map<const Buffer*, std::vector<std::uint8_t>> read;
   std::vector<std::vector<std::vector<glm::vec3>>> out;
   for (const auto& instance : instances_) {
     out.emplace_back();
     for (const auto& mesh : instance->meshes)
-      for (const auto& primitive : mesh.primitives) {
-        auto bytes = readback(context_, primitive.world_positions);
-        if (!bytes) return bytes.error();
-        std::vector<glm::vec3> positions(primitive.vertex_count);
-        const auto* vertices = reinterpret_cast<const glm::vec4*>(bytes->data());
-        for (std::uint32_t v = 0; v < primitive.vertex_count; ++v) positions[v] = glm::vec3(vertices[v]);
+      for (const SkinGroup::Primitive& primitive : skin_groups_[mesh.group].primitives) {
+        if (!read.contains(&primitive.world_positions)) {
+          auto bytes = readback(context_, primitive.world_positions);
+          if (!bytes) return bytes.error();
+          read[&primitive.world_positions] = std::move(*bytes);
+        }
+        const auto* vertices = reinterpret_cast<const glm::vec4*>(read[&primitive.world_positions].data()) +
+                               std::size_t(mesh.group_instance) * primitive.instance_stride;
+        std::vector<glm::vec3> positions(primitive.bind_pose->vertex_count);
+        for (std::size_t v = 0; v < positions.size(); ++v) positions[v] = glm::vec3(vertices[v]);
         out.back().push_back(std::move(positions));
       }
   }
@@ -219,12 +253,17 @@ Result<std::vector<std::vector<std::vector<glm::vec3>>>> SceneRenderer::read_ski
 
 void SceneRenderer::record_skinning(VkCommandBuffer commands, std::uint32_t slot) const {
   memory_barrier(commands);  // the previous frame may still read the skinned vertices
-  for (const auto& instance : instances_)
-    for (const auto& mesh : instance->meshes) {
-      const SkinPalette palette{&mesh.palettes[slot], &mesh.normal_palettes[slot], mesh.palette_joints};
-      for (const auto& primitive : mesh.primitives)
-        skin_pass_->record(context_, commands, primitive, palette,
-                           mesh.morph_weights.empty() ? nullptr : &mesh.morph_weights[slot]);
+  for (const SkinGroup& group : skin_groups_)
+    for (const SkinGroup::Primitive& primitive : group.primitives) {
+      SkinBatch batch;
+      batch.bind_pose = primitive.bind_pose.get();
+      batch.instances = group.instances;
+      batch.instance_stride = primitive.instance_stride;
+      batch.world_positions = &primitive.world_positions;
+      batch.world_normals = &primitive.world_normals;
+      batch.palette = {&group.palettes[slot], &group.normal_palettes[slot], group.palette_joints};
+      batch.morph_weights = group.morph_weights.empty() ? nullptr : &group.morph_weights[slot];
+      skin_pass_->record(context_, commands, batch);
     }
   SkinPass::record_outputs_barrier(commands);  // one for all dispatches: their outputs are disjoint
 }

@@ -1,5 +1,7 @@
 #include "gpu/scene_renderer.h"
 
+#include <time.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
@@ -86,7 +88,8 @@ Result<FrameConfig> SceneRenderer::make_config(const settings::RenderSettings& s
     std::uint64_t receivers = 0;
     for (const auto& instance : instances_)
       for (const auto& mesh : instance->meshes)
-        for (const auto& primitive : mesh.primitives) receivers += round_up_to_receiver_group(primitive.vertex_count);
+        for (const auto& primitive : skin_groups_[mesh.group].primitives)
+          receivers += round_up_to_receiver_group(primitive.bind_pose->vertex_count);
     for (const auto& mesh : static_meshes_) receivers += round_up_to_receiver_group(mesh.draw().vertex_count());
     // Receivers × n² floats of log occlusion must fit one storage buffer binding.
     const std::uint64_t order = std::uint64_t(settings.sh_order);
@@ -182,15 +185,24 @@ Result<std::vector<DrawItem>> SceneRenderer::prepare(const FrameRequest& request
       const bool skinned = mesh.skin >= 0;
       const auto& palette = skinned ? pose.skin_matrices[std::size_t(mesh.skin)] : rigid;
       const auto& normals = skinned ? pose.normal_matrices[std::size_t(mesh.skin)] : rigid_normals;
-      std::memcpy(mesh.palettes[slot].mapped(), palette.data(), palette.size() * sizeof(glm::mat4));
-      std::memcpy(mesh.normal_palettes[slot].mapped(), normals.data(), normals.size() * sizeof(glm::mat4));
-      if (!mesh.morph_weights.empty())
-        std::memcpy(mesh.morph_weights[slot].mapped(), pose.morph_weights.data() + mesh.morph_offset,
-                    std::size_t(mesh.morph_weights[slot].size()));
-      for (std::size_t i = 0; i < mesh.primitives.size(); ++i) {
-        draws.push_back({&mesh.primitives[i].world_positions, &mesh.primitives[i].world_normals, mesh.indices[i].get(),
+      // This instance's ranges of its group's palettes and morph weights.
+      SkinGroup& group = skin_groups_[mesh.group];
+      const std::size_t palette_at = std::size_t(mesh.group_instance) * group.palette_joints * sizeof(glm::mat4);
+      std::memcpy(static_cast<std::uint8_t*>(group.palettes[slot].mapped()) + palette_at, palette.data(),
+                  palette.size() * sizeof(glm::mat4));
+      std::memcpy(static_cast<std::uint8_t*>(group.normal_palettes[slot].mapped()) + palette_at, normals.data(),
+                  normals.size() * sizeof(glm::mat4));
+      if (!group.morph_weights.empty())
+        std::memcpy(static_cast<std::uint8_t*>(group.morph_weights[slot].mapped()) +
+                        std::size_t(mesh.group_instance) * group.morph_targets * sizeof(float),
+                    pose.morph_weights.data() + mesh.morph_offset, group.morph_targets * sizeof(float));
+      for (std::size_t i = 0; i < group.primitives.size(); ++i) {
+        const SkinGroup::Primitive& skinned_primitive = group.primitives[i];
+        draws.push_back({&skinned_primitive.world_positions, &skinned_primitive.world_normals, mesh.indices[i].get(),
                          mesh.index_counts[i], mesh.materials[i].base_color,
                          mesh.uvs[i].get(), mesh.materials[i].texture, int(index)});
+        draws.back().first_vertex = mesh.group_instance * skinned_primitive.instance_stride;
+        draws.back().vertices = skinned_primitive.bind_pose->vertex_count;
         draws.back().vsgl_exposure = mesh.vsgl_exposure[i].get();
         if (by_bone_group) {
           draws.back().vsgl_indices = &mesh.vsgl_orders[i]->indices;
@@ -284,6 +296,13 @@ Result<FinishedFrame> SceneRenderer::render(const FrameRequest& request) {
 
 namespace {
 
+// CPU time of the whole process (every thread), milliseconds.
+double process_cpu_ms() {
+  timespec now{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+  return double(now.tv_sec) * 1e3 + double(now.tv_nsec) * 1e-6;
+}
+
 FrameRequest scene_frame(const scene::Scene& scene, int frame) {
   FrameRequest request;
   request.time_s = scene::frame_time_s(scene.output, frame);
@@ -318,10 +337,14 @@ Result<PassTimings> SceneRenderer::time_passes(int frame, PassClock clock) {
   PassTimings timings;
   timings.cpu_prepare_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   timings.proxies = slots_[0].statistics.proxies;
+  double last_cpu_ms = 0.0;  // the process CPU time of the last `timed` submit
   auto timed = [&](const std::function<void(VkCommandBuffer)>& record) -> Result<double> {
+    const double begin_cpu = process_cpu_ms();
     const auto begin_time = std::chrono::steady_clock::now();
     if (Status done = context_.submit_and_wait(record); !done) return done.error();
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin_time).count();
+    const auto end_time = std::chrono::steady_clock::now();
+    last_cpu_ms = process_cpu_ms() - begin_cpu;
+    return std::chrono::duration<double, std::milli>(end_time - begin_time).count();
   };
   const auto passes = frame_pass_order(frame_->settings().method);
   if (clock == PassClock::timestamps_if_valid) {
@@ -362,6 +385,7 @@ Result<PassTimings> SceneRenderer::time_passes(int frame, PassClock clock) {
   auto skin = timed([&](VkCommandBuffer commands) { record_skinning(commands, 0); });
   if (!skin) return skin.error();
   timings.milliseconds[std::size_t(FramePass::skin)] = *skin;
+  timings.cpu_milliseconds[std::size_t(FramePass::skin)] = last_cpu_ms;
   for (FramePass pass : passes) {
     auto ms = timed([&](VkCommandBuffer commands) {
       memory_barrier(commands);  // the previous pass's submission wrote what this one reads
@@ -370,6 +394,7 @@ Result<PassTimings> SceneRenderer::time_passes(int frame, PassClock clock) {
     });
     if (!ms) return ms.error();
     timings.milliseconds[std::size_t(pass)] = *ms;
+    timings.cpu_milliseconds[std::size_t(pass)] = last_cpu_ms;
   }
   return timings;
 }

@@ -73,6 +73,10 @@ enum class PassClock { fenced_cpu, timestamps_if_valid };
 // Milliseconds of each pass of one frame, keyed by the pass names of `bench frame`.
 struct PassTimings {
   std::array<double, std::size_t(FramePass::count)> milliseconds{};  // indexed by FramePass
+  // Fenced CPU timings only: the process's CPU time (user + system, every thread: lavapipe's
+  // workers included) spent on each pass's submit, less sensitive to other processes' load
+  // than the wall time; 0 with timestamps.
+  std::array<double, std::size_t(FramePass::count)> cpu_milliseconds{};
   double cpu_prepare_ms = 0.0;
   std::size_t proxies = 0;
   bool timestamps = false;      // milliseconds come from GPU timestamps (else fenced CPU timings)
@@ -102,6 +106,8 @@ struct FinishedFrame {
   image::ImageF hdr;                    // linear radiance (readback outputs with hdr)
   FrameStatistics statistics;
 };
+
+struct SkinGroup;  // scene_renderer_parts.h
 
 class SceneRenderer {
  public:
@@ -174,6 +180,7 @@ class SceneRenderer {
   std::shared_ptr<const world::World> world_;
   std::vector<std::unique_ptr<ModelTextures>> model_textures_;  // one per world model
   std::vector<std::unique_ptr<Instance>> instances_;
+  std::vector<SkinGroup> skin_groups_;  // per model mesh node: its instances skinned together
   std::vector<StaticMesh> static_meshes_;
   std::vector<std::unique_ptr<MaterialTextures>> static_textures_;  // the textures static_meshes_ bind
   settings::ShadingMethod static_meshes_method_ = settings::ShadingMethod::image_space;

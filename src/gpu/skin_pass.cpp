@@ -77,6 +77,13 @@ Result<SkinPass> SkinPass::create(const Context& context) {
 }
 
 Result<SkinnedPrimitive> SkinPass::upload(Context& context, const anim::Primitive& primitive) {
+  auto bind_pose = upload_bind_pose(context, primitive);
+  if (!bind_pose) return bind_pose.error();
+  return instantiate(context, std::move(*bind_pose));
+}
+
+Result<std::shared_ptr<const SkinBindPose>> SkinPass::upload_bind_pose(Context& context,
+                                                                      const anim::Primitive& primitive) {
   if (primitive.influences_per_vertex < 1) return make_error("skin pass: primitive has no skin influences");
   if (primitive.positions.empty()) return make_error("skin pass: primitive has no vertices");
   auto bind_pose = std::make_shared<SkinBindPose>();
@@ -106,7 +113,7 @@ Result<SkinnedPrimitive> SkinPass::upload(Context& context, const anim::Primitiv
   }
   if (Status morphs = upload_morph_targets(context, primitive, out.has_normals, out); !morphs) return morphs.error();
   out.morph_targets = std::uint32_t(primitive.morph_targets.size());
-  return instantiate(context, std::move(bind_pose));
+  return std::shared_ptr<const SkinBindPose>(std::move(bind_pose));
 }
 
 Result<SkinnedPrimitive> SkinPass::instantiate(const Context& context, std::shared_ptr<const SkinBindPose> bind_pose) {
@@ -131,15 +138,35 @@ PaletteBinding SkinPass::binding_for(std::uint32_t joints) const {
   return joints <= uniform_joints_ ? PaletteBinding::uniform : PaletteBinding::storage;
 }
 
+std::uint32_t SkinPass::instance_stride(const Context& context, std::uint32_t vertex_count) {
+  const VkDeviceSize alignment = std::max<VkDeviceSize>(context.limits().minStorageBufferOffsetAlignment, 16);
+  const std::uint32_t per = std::uint32_t((alignment + 15) / 16);  // vertices (vec4) per alignment unit
+  return (vertex_count + per - 1) / per * per;
+}
+
 void SkinPass::record(const Context& context, VkCommandBuffer commands, const SkinnedPrimitive& primitive,
                       const SkinPalette& palette, const Buffer* morph_weights,
                       std::optional<PaletteBinding> binding) const {
+  SkinBatch batch;
+  batch.bind_pose = primitive.bind_pose.get();
+  batch.instances = 1;
+  batch.instance_stride = primitive.vertex_count;
+  batch.world_positions = &primitive.world_positions;
+  batch.world_normals = &primitive.world_normals;
+  batch.palette = palette;
+  batch.morph_weights = morph_weights;
+  record(context, commands, batch, binding);
+}
+
+void SkinPass::record(const Context& context, VkCommandBuffer commands, const SkinBatch& batch,
+                      std::optional<PaletteBinding> binding) const {
+  const SkinBindPose& bind = *batch.bind_pose;
   // Without morphing the delta and weight bindings are never read: any buffer fills them.
-  const bool morphing = morph_weights != nullptr && primitive.morph_targets > 0;
-  const SkinBindPose& bind = *primitive.bind_pose;
+  const bool morphing = batch.morph_weights != nullptr && bind.morph_targets > 0;
   const Buffer& position_deltas = morphing ? bind.position_deltas : bind.positions;
-  const Buffer& normal_deltas = morphing && primitive.has_normals ? bind.normal_deltas : bind.normals;
-  const bool uniform = binding.value_or(binding_for(palette.joints)) == PaletteBinding::uniform;
+  const Buffer& normal_deltas = morphing && bind.has_normals ? bind.normal_deltas : bind.normals;
+  const SkinPalette& palette = batch.palette;
+  const bool uniform = binding.value_or(binding_for(batch.instances * palette.joints)) == PaletteBinding::uniform;
   const Pipeline& pipeline = uniform ? uniform_pipeline_ : storage_pipeline_;
   const Buffer& skin_matrices = *palette.skin_matrices;
   const Buffer& normal_matrices = palette.normal_matrices ? *palette.normal_matrices : skin_matrices;
@@ -150,11 +177,11 @@ void SkinPass::record(const Context& context, VkCommandBuffer commands, const Sk
       .storage_buffer(gpu_layout::kSkinBindBindNormals, bind.normals)
       .storage_buffer(gpu_layout::kSkinBindJoints, bind.joints)
       .storage_buffer(gpu_layout::kSkinBindWeights, bind.weights)
-      .storage_buffer(gpu_layout::kSkinBindOutPositions, primitive.world_positions)
-      .storage_buffer(gpu_layout::kSkinBindOutNormals, primitive.world_normals)
+      .storage_buffer(gpu_layout::kSkinBindOutPositions, *batch.world_positions)
+      .storage_buffer(gpu_layout::kSkinBindOutNormals, *batch.world_normals)
       .storage_buffer(gpu_layout::kSkinBindPositionDeltas, position_deltas)
       .storage_buffer(gpu_layout::kSkinBindNormalDeltas, normal_deltas)
-      .storage_buffer(gpu_layout::kSkinBindMorphWeights, morphing ? *morph_weights : bind.weights);
+      .storage_buffer(gpu_layout::kSkinBindMorphWeights, morphing ? *batch.morph_weights : bind.weights);
   if (uniform)
     descriptors.uniform_buffer(gpu_layout::kSkinBindSkinMatrices, skin_matrices)
         .uniform_buffer(gpu_layout::kSkinBindNormalMatrices, normal_matrices);
@@ -162,11 +189,16 @@ void SkinPass::record(const Context& context, VkCommandBuffer commands, const Sk
     descriptors.storage_buffer(gpu_layout::kSkinBindSkinMatrices, skin_matrices)
         .storage_buffer(gpu_layout::kSkinBindNormalMatrices, normal_matrices);
   descriptors.push(context, commands, pipeline);
-  const gpu_layout::SkinPush push{primitive.vertex_count,        primitive.influences,
-                                  primitive.has_normals ? 1u : 0u, palette.normal_matrices ? 1u : 0u,
-                                  morphing ? primitive.morph_targets : 0u, 0u, 0u, 0u};
+  const gpu_layout::SkinPush push{bind.vertex_count,
+                                  bind.influences,
+                                  bind.has_normals ? 1u : 0u,
+                                  palette.normal_matrices ? 1u : 0u,
+                                  morphing ? bind.morph_targets : 0u,
+                                  palette.joints,
+                                  batch.instance_stride,
+                                  0u};
   pipeline.push_constants(commands, &push, sizeof(push));
-  vkCmdDispatch(commands, group_count(primitive.vertex_count, gpu_layout::kSkinLocalSize), 1, 1);
+  vkCmdDispatch(commands, group_count(bind.vertex_count, gpu_layout::kSkinLocalSize), batch.instances, 1);
   context.end_label(commands);
 }
 

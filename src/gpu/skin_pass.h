@@ -1,5 +1,6 @@
 #pragma once
-// Skin pass (frame step 1): linear blend skinning on the GPU, one dispatch per skinned primitive.
+// Skin pass (frame step 1): linear blend skinning on the GPU, one dispatch per skinned primitive
+// of a model for all its instances (SkinBatch).
 //   inputs : SkinnedPrimitive (static bind-pose buffers, uploaded once), the skin's palette of
 //            skin matrices (and optionally normal matrices) as column-major mat4 in a buffer,
 //            read as a uniform buffer up to kSkinUniformPaletteJoints, else as a storage buffer
@@ -52,6 +53,19 @@ struct SkinPalette {
   std::uint32_t joints = 0;                 // matrices in each
 };
 
+// Every instance of one skinned primitive, skinned in one dispatch: instance i reads joints
+// i × palette.joints .. of the palettes and morph weights i × morph_targets .., and writes
+// vertices i × instance_stride .. of the outputs (vec4 per vertex, world space).
+struct SkinBatch {
+  const SkinBindPose* bind_pose = nullptr;
+  std::uint32_t instances = 1;
+  std::uint32_t instance_stride = 0;        // vertices; ≥ bind_pose->vertex_count
+  const Buffer* world_positions = nullptr;  // out: instances × instance_stride vec4
+  const Buffer* world_normals = nullptr;    // out: same layout
+  SkinPalette palette;                      // joints per instance; buffers hold instances × joints
+  const Buffer* morph_weights = nullptr;    // instances × morph_targets floats; null: no morphing
+};
+
 // Which skin.comp variant reads a palette (shaders/shared/skin_palette.h).
 enum class PaletteBinding { uniform, storage };
 
@@ -63,6 +77,9 @@ class SkinPass {
   static Result<SkinPass> create(const Context& context);
 
   // Uploads a skinned primitive's bind-pose data (influences_per_vertex must be ≥ 1).
+  static Result<std::shared_ptr<const SkinBindPose>> upload_bind_pose(Context& context,
+                                                                      const anim::Primitive& primitive);
+  // upload_bind_pose and instantiate.
   static Result<SkinnedPrimitive> upload(Context& context, const anim::Primitive& primitive);
   // Another instance of an uploaded primitive: its bind pose shared, outputs of its own.
   static Result<SkinnedPrimitive> instantiate(const Context& context, std::shared_ptr<const SkinBindPose> bind_pose);
@@ -71,6 +88,11 @@ class SkinPass {
   // maxUniformBufferRange holds that many), storage beyond.
   PaletteBinding binding_for(std::uint32_t joints) const;
 
+  // Vertices per instance in a SkinBatch's outputs: vertex_count rounded up so that each
+  // instance's range starts at a multiple of the device's minStorageBufferOffsetAlignment (a
+  // later pass binds one instance's range on its own).
+  static std::uint32_t instance_stride(const Context& context, std::uint32_t vertex_count);
+
   // Records the dispatch, and no barrier: the dispatches of a frame write disjoint outputs, so
   // the caller records one record_outputs_barrier after all of them.
   // `morph_weights`: one float per morph target (the primitive's slice of PoseBuffers::
@@ -78,6 +100,9 @@ class SkinPass {
   // variants); uniform needs palette.joints ≤ kSkinUniformPaletteJoints.
   void record(const Context& context, VkCommandBuffer commands, const SkinnedPrimitive& primitive,
               const SkinPalette& palette, const Buffer* morph_weights = nullptr,
+              std::optional<PaletteBinding> binding = std::nullopt) const;
+  // One dispatch for every instance of the batch (binding_for(instances × palette.joints)).
+  void record(const Context& context, VkCommandBuffer commands, const SkinBatch& batch,
               std::optional<PaletteBinding> binding = std::nullopt) const;
 
   // Makes every earlier dispatch's outputs visible to later vertex/fragment/compute reads.

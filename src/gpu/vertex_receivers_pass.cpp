@@ -49,8 +49,8 @@ void VertexReceiversPass::record(const Context& context, VkCommandBuffer command
     const std::uint32_t count = draw.vertex_count();
     if (offset + round_up_to_receiver_group(count) > in.receiver_capacity) break;  // the G-buffer skips these too
     DescriptorPush()
-        .storage_buffer(kVertexReceiversBindPositions, *draw.positions)
-        .storage_buffer(kVertexReceiversBindNormals, *draw.normals)
+        .storage_buffer(kVertexReceiversBindPositions, *draw.positions, draw.vertex_bytes())
+        .storage_buffer(kVertexReceiversBindNormals, *draw.normals, draw.vertex_bytes())
         .storage_buffer(kVertexReceiversBindReceivers, *out.receivers)
         .push(context, commands, pipeline_);
     const VertexReceiversPush push{count, offset, 0, 0};

@@ -85,8 +85,8 @@ void VsglLightsPass::record(const Context& context, VkCommandBuffer commands, co
     if (groups == 0 || partial + groups > kVsglMaxPartials) continue;  // fitted as zero
     DescriptorPush()
         .uniform_buffer(kVsglBindFrame, *in.constants)
-        .storage_buffer(kVsglBindPositions, *draw.positions)
-        .storage_buffer(kVsglBindNormals, *draw.normals)
+        .storage_buffer(kVsglBindPositions, *draw.positions, draw.vertex_bytes())
+        .storage_buffer(kVsglBindNormals, *draw.normals, draw.vertex_bytes())
         .storage_buffer(kVsglBindIndices, *range.indices)
         .storage_buffer(kVsglBindPartials, *out.partials)
         .storage_buffer(kVsglBindLights, *out.lights)

@@ -2,11 +2,13 @@
 // changed in place gives the frame a renderer created with it gives, bit for bit; a scene time
 // renders what the frame number renders (and today's goldens); a camera override renders that
 // camera; a caller's image receives the readback's pixels; the GPU skins the world state's poses
-// as the path tracer's CPU skinning does.
+// as the path tracer's CPU skinning does, and its one skin dispatch per model primitive for all
+// instances gives the vertices one dispatch per character gives.
 #include <cstring>
 #include <memory>
 
 #include "gpu/scene_renderer.h"
+#include "gpu/skin_pass.h"
 #include "gpu/transfer.h"
 #include "gpu_test_context.h"
 #include "ref/scene_geometry.h"
@@ -231,6 +233,73 @@ TEST_F(LiveRendererTest, GpuAndPathTracerPoseTheWorldStateAlike) {
         EXPECT_LT(largest, 2e-5f) << "t " << t << " instance " << i << " primitive " << p;
       }
     EXPECT_EQ(mesh, traced->size() - world->static_models().size()) << "every character mesh compared";
+  }
+}
+
+// The crowd's 20 mannequins skinned in one dispatch per primitive (SkinBatch) give bit for bit
+// the vertices of skinning each character in a dispatch of its own (the per-character path the
+// renderer used before), at several times.
+TEST_F(LiveRendererTest, CrowdSkinnedInOneDispatchPerPrimitiveEqualsOneDispatchPerCharacter) {
+  auto world = default_world(scene::crowd_scene());
+  ASSERT_TRUE(world);
+  ASSERT_GE(world->instances().size(), 20u);
+  auto renderer = SceneRenderer::create(context(), world, world->scene().render, kSize, kSize);
+  ASSERT_TRUE(renderer.ok()) << renderer.message();
+  auto pass = SkinPass::create(context());
+  ASSERT_TRUE(pass.ok()) << pass.message();
+  world::WorldState state;
+  for (double t : {0.0, 1.3}) {
+    ASSERT_TRUE(world->evaluate(t, std::nullopt, state).ok());
+    FrameRequest request;
+    request.state = &state;
+    ASSERT_TRUE((*renderer)->render(request).ok());
+    auto batched = (*renderer)->read_skinned_positions();
+    ASSERT_TRUE(batched.ok()) << batched.message();
+    ASSERT_EQ(batched->size(), world->instances().size());
+    std::size_t compared = 0;
+    for (std::size_t i = 0; i < world->instances().size(); ++i) {
+      const anim::Character& character = world->instances()[i].model->character;
+      const anim::PoseBuffers& pose = state.instances[i].pose;
+      std::size_t p = 0;  // primitive of the instance, in read_skinned_positions order
+      for (const anim::Node& node : character.nodes) {
+        if (node.mesh < 0) continue;
+        ASSERT_GE(node.skin, 0) << "the crowd's meshes are skinned";
+        const auto& palette = pose.skin_matrices[std::size_t(node.skin)];
+        const auto& normals = pose.normal_matrices[std::size_t(node.skin)];
+        Buffer palettes[2];
+        for (int b = 0; b < 2; ++b) {
+          const auto& matrices = b == 0 ? palette : normals;
+          auto buffer = create_buffer_with_data(context(), as_bytes(std::span<const glm::mat4>(matrices)),
+                                                SkinPass::kPaletteUsage);
+          ASSERT_TRUE(buffer.ok()) << buffer.message();
+          palettes[b] = std::move(*buffer);
+        }
+        for (const anim::Primitive& primitive : character.meshes[std::size_t(node.mesh)].primitives) {
+          auto single = SkinPass::upload(context(), primitive);
+          ASSERT_TRUE(single.ok()) << single.message();
+          ASSERT_TRUE(context()
+                          .submit_and_wait([&](VkCommandBuffer commands) {
+                            pass->record(context(), commands, *single,
+                                         SkinPalette{&palettes[0], &palettes[1], std::uint32_t(palette.size())});
+                            SkinPass::record_outputs_barrier(commands);
+                          })
+                          .ok());
+          auto bytes = readback(context(), single->world_positions);
+          ASSERT_TRUE(bytes.ok()) << bytes.message();
+          ASSERT_LT(p, (*batched)[i].size());
+          const std::vector<glm::vec3>& got = (*batched)[i][p++];
+          ASSERT_EQ(got.size(), primitive.positions.size()) << "instance " << i;
+          const auto* expected = reinterpret_cast<const glm::vec4*>(bytes->data());
+          std::size_t differing = 0;
+          for (std::size_t v = 0; v < got.size(); ++v)
+            if (std::memcmp(&got[v], &expected[v], sizeof(glm::vec3)) != 0) ++differing;
+          EXPECT_EQ(differing, 0u) << "t " << t << " instance " << i << " primitive " << p - 1;
+          ++compared;
+        }
+      }
+      EXPECT_EQ(p, (*batched)[i].size()) << "every primitive of instance " << i << " compared";
+    }
+    EXPECT_GE(compared, 80u);
   }
 }
 
