@@ -167,4 +167,18 @@ Result<ShotInputs> shot_inputs(const world::World& world, const world::WorldStat
   return shot;
 }
 
+Result<QualityChoice> choose_for_shot(const world::World& world, const settings::RenderSettings& requested, double time_s,
+                                      const std::optional<scene::CameraState>& camera, std::uint32_t height) {
+  QualityChoice choice;
+  choice.settings = requested;
+  if (requested.quality == settings::kQualityManual) return choice;
+  world::WorldState state;
+  if (Status evaluated = world.evaluate(time_s, camera, state); !evaluated) return make_error("quality: " + evaluated.message());
+  auto shot = shot_inputs(world, state, height * std::uint32_t(settings::supersampling_factor(requested.antialiasing)));
+  if (!shot) return shot.error();
+  ChooseSettingsJob job{&requested, &*shot, &choice};
+  if (!job.run()) return make_error("quality: invalid shot inputs (a character with no projected size)");
+  return choice;
+}
+
 }  // namespace proxygi::quality

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "base/result.h"
+#include "scene/camera.h"
 #include "settings/render_settings.h"
 
 namespace proxygi::world {
@@ -75,5 +76,11 @@ struct ChooseSettingsJob {
 // environment at order 6, each character's tracked spheres' bounding sphere projected with the
 // state's camera, its rig's sphere count and fit quality.
 Result<ShotInputs> shot_inputs(const world::World& world, const world::WorldState& state, std::uint32_t height);
+
+// The choice for `requested` in one shot of `world`: the world evaluated at scene time `time_s`
+// with `camera` (the scene's when empty), seen on `height` display pixels × the supersampling
+// factor of requested.antialiasing. Manual: `requested` unchanged and nothing evaluated.
+Result<QualityChoice> choose_for_shot(const world::World& world, const settings::RenderSettings& requested, double time_s,
+                                      const std::optional<scene::CameraState>& camera, std::uint32_t height);
 
 }  // namespace proxygi::quality

@@ -77,6 +77,10 @@ void draw_hud(UiContext& ui, UiRequests& requests) {
     }
     ImGui::TextUnformatted(clips.c_str());
   }
+  if (!hud.quality.empty()) {
+    ImGui::TextUnformatted(hud.quality.c_str());
+    for (const std::string& reason : hud.quality_reasons) ImGui::Text("  %s", reason.c_str());
+  }
   if (!hud.passes.empty()) {
     ImGui::Text("passes (%s):", hud.pass_clock.c_str());
     for (const PassTime& pass : hud.passes) ImGui::Text("  %-20s %7.2f ms", pass.name.c_str(), pass.ms);

@@ -1,6 +1,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
 
 #include "image/image.h"
 #include "quality/calibration.h"
@@ -232,6 +236,54 @@ TEST(QualityChoose, ValidateRefusesMissingAndBadInputs) {
   ShotInputs zero_radius = shot;
   zero_radius.characters[0].radius_px = 0.0f;
   EXPECT_FALSE((ChooseSettingsJob{&requested, &zero_radius, &out}.run()));
+}
+
+// In-sample check on the committed chart (README "render.quality"): for each chart scene (its
+// calibration radius and rig fit, the default stage's lighting) and each named level, the chosen
+// (order, k, upsampling) is a row the chart measured; the table printed next to it is the
+// measured error and time of the choice against the cheapest measured row meeting the target.
+TEST(QualityChart, ChoicesOnTheChartsOwnRows) {
+  std::ifstream csv(PROXYGI_SOURCE_DIR "/docs/bench-chart.csv");
+  ASSERT_TRUE(csv) << "docs/bench-chart.csv";
+  struct Row { double ms, error; };
+  std::map<std::string, Row> rows;  // "scene n k up"
+  std::string line;
+  std::getline(csv, line);
+  while (std::getline(csv, line)) {
+    std::vector<std::string> cells;
+    std::stringstream split(line);
+    for (std::string cell; std::getline(split, cell, ',');) cells.push_back(cell);
+    if (cells.size() < 10 || cells[1] != "proxy" || cells[6] != "averaged") continue;
+    rows[cells[0] + " " + cells[3] + " " + cells[4] + " " + (cells[4] == "1" ? "bilinear" : cells[5])] = {std::stod(cells[8]), std::stod(cells[9])};
+  }
+  struct SceneInputs { const char* name; float radius; int spheres; float outside; };
+  const SceneInputs scenes[] = {{"default", 25.93f, 32, 0.1593f}, {"CesiumMan", 49.47f, 24, 0.2036f},
+                                {"Fox", 43.71f, 45, 0.2403f}, {"RiggedSimple", 39.21f, 5, 0.2122f}};
+  const ShotInputs base = shot_of(scene::default_scene(), {});
+  int met = 0, total = 0;
+  for (const SceneInputs& chart : scenes)
+    for (const auto& [level, target] : settings::kQualityLevels) {
+      if (target == settings::kQualityManual) continue;
+      ShotInputs shot = base;
+      shot.characters = {{chart.radius, chart.spheres, chart.outside}};
+      const QualityChoice c = choose(target, shot);
+      const std::string key = std::string(chart.name) + " " + std::to_string(c.settings.sh_order) + " " +
+                              std::to_string(c.settings.receiver_scale) + " " + std::string(settings::name_of(c.settings.upsampling));
+      ASSERT_TRUE(rows.count(key)) << key;
+      const Row& chosen = rows[key];
+      std::string oracle = "none";
+      double oracle_ms = 0.0;
+      for (const auto& [label, row] : rows)
+        if (label.rfind(std::string(chart.name) + " ", 0) == 0 && row.error <= double(target) && (oracle == "none" || row.ms < oracle_ms))
+          oracle = label, oracle_ms = row.ms;
+      ++total;
+      met += chosen.error <= double(target) ? 1 : 0;
+      std::printf("| %s | %s %.4g | n%d k%d %s | %.4f | %.4f | %.2f | %s | %.2f | %s |\n", chart.name, std::string(level).c_str(),
+                  double(target), c.settings.sh_order, c.settings.receiver_scale,
+                  std::string(settings::name_of(c.settings.upsampling)).c_str(), c.predicted, chosen.error, chosen.ms,
+                  oracle.c_str(), oracle_ms, oracle == "none" ? "-" : (std::to_string(chosen.ms / oracle_ms)).substr(0, 4).c_str());
+    }
+  std::printf("met on the chart's rows: %d of %d\n", met, total);
 }
 
 }  // namespace
