@@ -168,7 +168,10 @@ TEST(QualityChoose, ASkyWithoutSunNeedsFewerBandsThanOneWithASun) {
   EXPECT_LT(b.settings.sh_order, a.settings.sh_order) << describe(a) << "\n" << describe(b);
 }
 
-TEST(QualityChoose, AFartherCharacterGetsACoarserKAndFewerSpheres) {
+// The brief expected a farther character to get a coarser k; the chart says the opposite for a
+// per-pixel error (its smallest character, the default scene's, pays the largest k 8 excess), so
+// a nearer (larger) character gets the coarser k and a farther one fewer spheres (LOD).
+TEST(QualityChoose, ANearerCharacterGetsACoarserKAndAFartherOneFewerSpheres) {
   const scene::Scene scene = scene::default_scene();
   CharacterView near = kChartCharacter;
   near.radius_px = 4.0f * float(calibration::kReferenceRadiusPx);  // 176 px
