@@ -216,6 +216,12 @@ int run_record(const RecordArgs& args) {
     if (!renderer) return fail_runtime(renderer.message());
     if (!quiet() && (*renderer)->static_transfer().level != settings::StaticTransfer::l0)
       std::fprintf(stderr, "record: %s\n", gpu::describe((*renderer)->static_transfer()).c_str());
+    // render.quality: the settings chosen for the first frame's shot, and why.
+    if (const quality::QualityChoice& choice = (*renderer)->quality(); !quiet() && choice.automatic) {
+      std::fprintf(stderr, "record: %s (shadow_eta resolves to %.3g)\n", quality::describe(choice).c_str(),
+                   (*renderer)->frame().shadow_eta());
+      for (const std::string& reason : choice.reasons) std::fprintf(stderr, "record:   %s\n", reason.c_str());
+    }
     progress.emplace(int(plan.frames.size()), plan.skipped, progress_stream);
     const Status rendered = plan.aov ? render_with_aovs(**renderer, plan, *progress)
                                      : render_in_flight(**renderer, plan, *progress);

@@ -40,11 +40,16 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Context& context, c
 }
 
 Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Context& context, std::shared_ptr<const world::World> world,
-                                                             const settings::RenderSettings& settings,
+                                                             const settings::RenderSettings& requested,
                                                              std::uint32_t width, std::uint32_t height,
                                                              std::uint32_t frames_in_flight,
                                                              const prt::StaticFieldOptions& static_transfer) {
   if (!world) return make_error("scene renderer: no world");
+  // render.quality: the shot is the scene camera at the scene's first frame.
+  const double first_time_s = scene::frame_time_s(world->scene().output, world->scene().output.first_frame);
+  auto choice = quality::choose_for_shot(*world, requested, first_time_s, std::nullopt, height);
+  if (!choice) return choice.error();
+  const settings::RenderSettings& settings = choice->settings;
   if (settings.splat == settings::SplatMethod::raster && settings.method != settings::ShadingMethod::image_space)
     log_warning("render.splat: 'raster' splats onto image-space receivers only; this method does not use it");
   std::unique_ptr<SceneRenderer> renderer(new SceneRenderer(context));
@@ -73,6 +78,8 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Context& context, s
   renderer->frame_ = std::move(*frame);
   renderer->static_options_ = static_transfer;
   if (Status s = renderer->update_static_transfer(settings, *tables); !s) return s.error();
+  renderer->quality_ = std::move(*choice);
+  renderer->shot_time_s_ = first_time_s;
   return renderer;
 }
 
@@ -119,6 +126,33 @@ Status SceneRenderer::wait_all() {
 }
 
 Status SceneRenderer::apply_settings(const settings::RenderSettings& settings, std::uint32_t width,
+                                     std::uint32_t height) {
+  auto choice = choose_quality(settings, shot_time_s_, shot_camera_, height);
+  if (!choice) return choice.error();
+  if (choice->automatic) return apply_choice(*choice, shot_time_s_, shot_camera_, width, height);
+  if (Status applied = apply_resolved(settings, width, height); !applied) return applied;
+  quality_ = std::move(*choice);
+  return {};
+}
+
+Result<quality::QualityChoice> SceneRenderer::choose_quality(const settings::RenderSettings& requested, double time_s,
+                                                             const std::optional<scene::CameraState>& camera,
+                                                             std::uint32_t height) const {
+  return quality::choose_for_shot(*world_, requested, time_s, camera, height);
+}
+
+Status SceneRenderer::apply_choice(const quality::QualityChoice& choice, double time_s,
+                                   const std::optional<scene::CameraState>& camera, std::uint32_t width, std::uint32_t height) {
+  const FrameConfig& current = frame_->config();
+  if (choice.settings != frame_->settings() || width != current.width || height != current.height)
+    if (Status applied = apply_resolved(choice.settings, width, height); !applied) return applied;
+  quality_ = choice;
+  shot_time_s_ = time_s;
+  shot_camera_ = camera;
+  return {};
+}
+
+Status SceneRenderer::apply_resolved(const settings::RenderSettings& settings, std::uint32_t width,
                                      std::uint32_t height) {
   if (auto invalid = settings::check_settings(settings)) return make_error("render." + *invalid);
   for (const SlotState& slot : slots_)

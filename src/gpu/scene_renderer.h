@@ -25,6 +25,7 @@
 #include "gpu/skin_pass.h"
 #include "gpu/soft_gi_frame.h"
 #include "prt/static_frame.h"
+#include "quality/choose.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
 #include "world/proxy_lod.h"
@@ -123,8 +124,25 @@ class SceneRenderer {
                                                        const prt::StaticFieldOptions& static_transfer = {});
   ~SceneRenderer();
 
-  // Changes settings and output size in place (waits for frames in flight first).
+  // Changes settings and output size in place (waits for frames in flight first). With
+  // render.quality a target, the settings rendered are quality::ChooseSettingsJob's choice for the
+  // last shot (the scene camera at the scene's first frame until requalify names another); the
+  // requested order, k, upsampling, shadow_eta and proxy_lod are replaced by the choice.
   Status apply_settings(const settings::RenderSettings& settings, std::uint32_t width, std::uint32_t height);
+
+  // render.quality (quality/choose.h): the choice for `requested` at scene time `time_s` seen by
+  // `camera` (the scene's when empty) on `height` pixels (× the supersampling factor). Manual:
+  // `requested` unchanged, nothing evaluated. Does not change the renderer.
+  Result<quality::QualityChoice> choose_quality(const settings::RenderSettings& requested, double time_s,
+                                                const std::optional<scene::CameraState>& camera,
+                                                std::uint32_t height) const;
+  // Renders `choice.settings` from now on and remembers the choice and its shot (time, camera) for
+  // later apply_settings calls. When its settings equal the current ones nothing is rebuilt (and
+  // frames may be in flight); otherwise as apply_settings.
+  Status apply_choice(const quality::QualityChoice& choice, double time_s, const std::optional<scene::CameraState>& camera,
+                      std::uint32_t width, std::uint32_t height);
+  // The choice the current settings came from (automatic false when render.quality is manual).
+  const quality::QualityChoice& quality() const { return quality_; }
 
   // Prepares a frame and submits it without waiting for the GPU. Ring slots are used round-robin;
   // the next slot must be free: finish the oldest begun frame first when all are in flight.
@@ -168,6 +186,8 @@ class SceneRenderer {
   Result<FrameConfig> make_config(const settings::RenderSettings& settings, std::uint32_t width,
                                   std::uint32_t height) const;
   Result<render::FrameTables> make_tables(const settings::RenderSettings& settings) const;
+  // apply_settings with settings already chosen (no render.quality resolution).
+  Status apply_resolved(const settings::RenderSettings& settings, std::uint32_t width, std::uint32_t height);
   // CPU half of a frame into ring slot `slot`: world state, skin palettes, constants, proxies.
   Result<std::vector<DrawItem>> prepare(const FrameRequest& request, std::uint32_t slot);
   void record_skinning(VkCommandBuffer commands, std::uint32_t slot) const;
@@ -191,6 +211,9 @@ class SceneRenderer {
   std::shared_ptr<const prt::StaticTransferField> static_field_;  // loaded once per SH order
   std::vector<float> static_records_;
   StaticTransferReport static_report_;
+  quality::QualityChoice quality_;             // render.quality: the current settings' choice
+  double shot_time_s_ = 0.0;                    // and the shot it was made for
+  std::optional<scene::CameraState> shot_camera_;
   std::unique_ptr<world::ProxyLod> proxy_lod_;  // render.proxy_lod auto: built on first use
   std::vector<render::Sphere> lod_spheres_;     // scratch: the spheres it streams this frame
 

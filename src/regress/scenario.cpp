@@ -45,10 +45,16 @@ Overrides read_overrides(const json& value, const std::string& path) {
     if (key.rfind("render.", 0) == 0) {
       const settings::Field* field = settings::find_field(std::string_view(key).substr(7));
       if (field == nullptr) fail(where, "unknown render setting");
-      if (field->kind == settings::FieldKind::choice || (field->accepts_auto && v.is_string())) {
-        double named = 0.0;  // a choice's name, or "auto"
+      if (field->kind == settings::FieldKind::choice || (settings::accepts_names(*field) && v.is_string())) {
+        double named = 0.0;  // a choice's name, "auto" or a named value ("balanced")
         if (auto why = settings::value_from_name(*field, detail::read_string(v, where), named)) fail(where, *why);
         out[key] = named;
+      } else if (!field->object_key.empty() && v.is_object()) {  // {"target_relative_mse": 0.015}
+        const std::string inner(field->object_key);
+        if (v.size() != 1 || !v.contains(inner)) fail(where, "expected {\"" + inner + "\": number}");
+        const double number = detail::read_double(v[inner], detail::join_path(where, inner));
+        if (auto why = settings::check_number(*field, number)) fail(detail::join_path(where, inner), *why);
+        out[key] = number;
       } else if (field->kind == settings::FieldKind::boolean) {
         out[key] = detail::read_bool(v, where) ? 1.0 : 0.0;
       } else {

@@ -249,14 +249,24 @@ settings::RenderSettings read_render(const json& value, const std::string& path)
       case settings::FieldKind::boolean: field.set(s, detail::read_bool(*v, where) ? 1.0 : 0.0); break;
       case settings::FieldKind::integer: field.set(s, double(detail::read_int(*v, where))); break;
       case settings::FieldKind::real: {
-        if (field.accepts_auto && v->is_string()) {  // "auto": chosen from the lighting
+        if (settings::accepts_names(field) && v->is_string()) {  // "auto", "manual", "balanced", ...
           double named = 0.0;
           if (auto why = settings::value_from_name(field, detail::read_string(*v, where), named)) fail(where, *why);
           field.set(s, named);
           break;
         }
+        if (!field.object_key.empty() && v->is_object()) {  // {"target_relative_mse": 0.015}
+          ObjectReader o(*v, where);
+          const std::string key(field.object_key);
+          const double number = double(detail::read_float(o.require(key), o.field(key)));
+          if (auto why = settings::check_number(field, number)) fail(o.field(key), *why);
+          o.finish();
+          field.set(s, number);
+          break;
+        }
         const double number = double(detail::read_float(*v, where));
-        if (settings::is_auto(field, number)) fail(where, *settings::check_number(field, number));
+        if (settings::value_name(field, number) && settings::check_number(field, number))
+          fail(where, *settings::check_number(field, number));
         field.set(s, number);
         break;
       }

@@ -156,7 +156,8 @@ ojson render_json(const settings::RenderSettings& r) {
       case settings::FieldKind::boolean: j[key] = value != 0.0; break;
       case settings::FieldKind::integer: j[key] = int(value); break;
       case settings::FieldKind::real:
-        if (settings::is_auto(field, value)) j[key] = std::string(settings::kAutoName);
+        if (auto name = settings::value_name(field, value)) j[key] = std::string(*name);
+        else if (!field.object_key.empty()) j[key][std::string(field.object_key)] = number(float(value));
         else j[key] = number(float(value));
         break;
       case settings::FieldKind::choice: j[key] = std::string(settings::choice_name(field, int(value))); break;

@@ -91,6 +91,23 @@ Field real(std::string_view key, std::string_view description, Needs needs, doub
   return f;
 }
 
+// render.quality's names, in kQualityLevels' order.
+constexpr auto kQualityNamed = [] {
+  std::array<NamedValue, std::size(kQualityLevels)> out{};
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = {kQualityLevels[i].first, double(kQualityLevels[i].second)};
+  return out;
+}();
+
+Field quality_field() {
+  Field f = real<&RenderSettings::quality>(
+      "quality", "manual, or a target relative MSE the renderer chooses order, k, upsampling, eta and LOD for",
+      kNeedConstants, 0.0, 0.005, 0.05);
+  f.max = kMaxQualityTarget;
+  f.named = kQualityNamed;
+  f.object_key = kQualityTargetKey;
+  return f;
+}
+
 Field with_auto(Field field) {
   field.accepts_auto = true;
   return field;
@@ -141,6 +158,7 @@ const std::vector<Field>& table() {
                                kNeedTargets | kNeedConstants, kAntialiasingChoices),
       choice<&S::proxy_lod>("proxy_lod", "proxy levels of detail: off (whole rigs) or auto (by projected size, cross-faded)",
                             kNeedConstants, kProxyLodChoices),
+      quality_field(),
   };
   return fields;
 }
@@ -151,11 +169,11 @@ const std::vector<Field>& table() {
   const auto& [method, sh_order, receiver_scale, shadow_eta, indirect_eta, sh_window, indirect_operator, exponential,
                hyb_tau, upsampling, bilateral_depth_epsilon, splat, indirect_method, vsgl_lights, vsgl_grouping,
                vsgl_sun, ground_bounce, tonemap, exposure_ev, static_transfer, antialiasing,
-               proxy_lod] = settings;
+               proxy_lod, quality] = settings;
   (void)method, (void)sh_order, (void)receiver_scale, (void)shadow_eta, (void)indirect_eta, (void)sh_window;
   (void)indirect_operator, (void)exponential, (void)hyb_tau, (void)upsampling, (void)bilateral_depth_epsilon;
   (void)splat, (void)indirect_method, (void)vsgl_lights, (void)vsgl_grouping, (void)vsgl_sun, (void)ground_bounce, (void)tonemap;
-  (void)exposure_ev, (void)static_transfer, (void)antialiasing, (void)proxy_lod;
+  (void)exposure_ev, (void)static_transfer, (void)antialiasing, (void)proxy_lod, (void)quality;
 }
 
 std::string show(double value) {
@@ -185,8 +203,35 @@ const Field* find_field(std::string_view key) {
 
 bool is_auto(const Field& field, double value) { return field.accepts_auto && value == double(kEtaFromLighting); }
 
-std::optional<std::string> check_value(const Field& field, double value) {
-  if (is_auto(field, value)) return std::nullopt;
+std::optional<std::string_view> value_name(const Field& field, double value) {
+  if (is_auto(field, value)) return kAutoName;
+  for (const NamedValue& named : field.named)
+    if (named.value == value) return named.name;
+  return std::nullopt;
+}
+
+bool accepts_names(const Field& field) {
+  return field.kind == FieldKind::choice || field.accepts_auto || !field.named.empty();
+}
+
+namespace {
+
+// `or "auto"` / `or one of "manual", "draft"` for range messages of fields that take names.
+std::string or_names(const Field& field) {
+  if (field.accepts_auto) return " or \"auto\"";
+  if (field.named.empty()) return "";
+  std::string out = " or one of ";
+  for (std::size_t i = 0; i < field.named.size(); ++i) {
+    if (i > 0) out += ", ";
+    out += '"';
+    out += field.named[i].name;
+    out += '"';
+  }
+  return out;
+}
+
+// check_value without the names: the number's own range.
+std::optional<std::string> check_plain(const Field& field, double value) {
   switch (field.kind) {
     case FieldKind::boolean:
       if (value != 0.0 && value != 1.0) return "must be true or false";
@@ -209,15 +254,23 @@ std::optional<std::string> check_value(const Field& field, double value) {
     case FieldKind::real:
       if (!std::isfinite(value)) return std::string("must be a finite number");
       if (field.min_exclusive && !(value > field.min))
-        return "must be > " + show(field.min) + (field.accepts_auto ? " or \"auto\"" : "") + " (got " + show(value) + ")";
-      if (value > field.max) return "must be <= " + show(field.max) + " (got " + show(value) + ")";
+        return "must be > " + show(field.min) + or_names(field) + " (got " + show(value) + ")";
+      if (value > field.max) return "must be <= " + show(field.max) + or_names(field) + " (got " + show(value) + ")";
       return std::nullopt;
   }
   return std::nullopt;
 }
 
+}  // namespace
+
+std::optional<std::string> check_value(const Field& field, double value) {
+  if (value_name(field, value)) return std::nullopt;
+  return check_plain(field, value);
+}
+
 std::optional<std::string> check_number(const Field& field, double value) {
   if (is_auto(field, value)) return "must be > " + show(field.min) + " or \"auto\" (got " + show(value) + ")";
+  if (field.kind == FieldKind::real) return check_plain(field, value);
   return check_value(field, value);
 }
 
@@ -238,6 +291,22 @@ std::optional<std::string> value_from_name(const Field& field, std::string_view 
       return std::nullopt;
     }
     return "unknown value " + quoted + " (expected a number or \"auto\")";
+  }
+  if (!field.named.empty()) {
+    for (const NamedValue& named : field.named)
+      if (named.name == text) {
+        value = named.value;
+        return std::nullopt;
+      }
+    std::string expected = " (expected";
+    if (!field.object_key.empty()) {
+      expected += " {\"";
+      expected += field.object_key;
+      expected += "\": number}";
+    } else {
+      expected += " a number";
+    }
+    return "unknown value " + quoted + expected + or_names(field) + ")";
   }
   return "expected a number, not " + quoted;
 }

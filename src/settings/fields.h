@@ -35,6 +35,12 @@ struct Choice {
   int value = 0;  // the enumerator as int
 };
 
+// A number a real field also accepts by name (render.quality "manual", "balanced", ...).
+struct NamedValue {
+  std::string_view name;
+  double value = 0.0;
+};
+
 struct Field {
   std::string_view key;          // scene-file key under "render"; also the UI label
   std::string_view description;  // one line for tooltips and help
@@ -49,6 +55,11 @@ struct Field {
   std::span<const Choice> choices;  // choice: names in the order errors list them
   // real: also the string "auto" in files and a checkbox in the UI, stored as kEtaFromLighting.
   bool accepts_auto = false;
+  // real: names for some values (the first may be a sentinel outside [min, max], as "manual" = 0
+  // of render.quality; like "auto" it is refused as a number). Written by name when one matches.
+  std::span<const NamedValue> named;
+  // real: when not empty, files also accept {object_key: number} and write unnamed values so.
+  std::string_view object_key;
   double (*get)(const RenderSettings&) = nullptr;
   void (*set)(RenderSettings&, double) = nullptr;
 };
@@ -60,10 +71,14 @@ const Field* find_field(std::string_view key);
 std::optional<std::string> check_value(const Field& field, double value);
 // Whether `value` is the "auto" of a field that accepts it.
 bool is_auto(const Field& field, double value);
+// The name of `value` among field.named (or "auto"), or nothing.
+std::optional<std::string_view> value_name(const Field& field, double value);
+// Whether a file or script may give this field as a string: a choice, "auto" or a named value.
+bool accepts_names(const Field& field);
 inline constexpr std::string_view kAutoName = "auto";
 // A value written as a number (scene file, viewer script, scenario override): check_value, except
-// that the stored form of "auto" (kEtaFromLighting, 0) is refused as a number, so `0` is an error
-// and only the string "auto" selects it.
+// that the stored form of "auto" (kEtaFromLighting, 0) or of a named sentinel ("manual", 0) is
+// refused as a number, so `0` is an error and only the string selects it.
 std::optional<std::string> check_number(const Field& field, double value);
 // A value written as a string: a choice's name, or "auto" for a field that accepts it. The reason
 // when `text` is neither ("unknown value \"big\" (expected a number or \"auto\")").

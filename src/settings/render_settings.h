@@ -97,6 +97,18 @@ inline constexpr float kProxyLodPixelsPerSphere = 4.0f;
 inline constexpr float kProxyLodHysteresis = 0.15f;  // switch at threshold × (1 ± this)
 inline constexpr int kProxyLodFadeFrames = 192;
 inline constexpr int kProxyLodMinSpheres = 8;
+// render.quality (issue 18; src/quality/choose.h): "manual" (kQualityManual, stored as 0) renders
+// every other setting as written; a target relative MSE against the path-traced reference (the
+// chart's metric, bench chart), written {"target_relative_mse": 0.015} or as a named level, makes
+// the renderer choose sh_order, receiver_scale, upsampling, shadow_eta and proxy_lod per shot from
+// cheap predictors (the scene's lighting, the characters' projected size) and print why.
+// The levels' targets sit on the committed chart's "all" rows (docs/bench-chart.csv): draft is met
+// by n3 k8, balanced by n4 k4 bilinear, high only by orders 5-6 at k <= 4.
+inline constexpr float kQualityManual = 0.0f;
+inline constexpr float kMaxQualityTarget = 1.0f;  // relative MSE; 1 is the error of a black image
+inline constexpr std::pair<std::string_view, float> kQualityLevels[] = {
+    {"manual", kQualityManual}, {"draft", 0.02f}, {"balanced", 0.015f}, {"high", 0.0125f}};
+inline constexpr std::string_view kQualityTargetKey = "target_relative_mse";  // the object form's key
 
 struct RenderSettings {
   ShadingMethod method = ShadingMethod::image_space;
@@ -125,6 +137,9 @@ struct RenderSettings {
   StaticTransfer static_transfer = StaticTransfer::l0;  // l0 until measured better (README)
   Antialiasing antialiasing = Antialiasing::off;
   ProxyLod proxy_lod = ProxyLod::off;  // nested sphere levels by projected size (proxies/lod.h)
+  // kQualityManual, or a target relative MSE in (0, kMaxQualityTarget] the other settings are
+  // chosen for (quality/choose.h). The frame itself never reads it.
+  float quality = kQualityManual;
   bool operator==(const RenderSettings&) const = default;
 };
 

@@ -17,7 +17,8 @@ Modifiers modifiers_of(const json& object) {
   return {object.value("shift", false), object.value("ctrl", false)};
 }
 
-// A setting value: a number, a boolean, a choice's name or "auto" (settings::value_from_name).
+// A setting value: a number, a boolean, a choice's name, "auto", a named value ("balanced") or,
+// for a field with an object form, {"target_relative_mse": 0.015} (settings::value_from_name).
 Result<double> setting_value(const std::string& key, const json& value) {
   const settings::Field* field = settings::find_field(key);
   if (!field) return make_error("unknown setting \"" + key + "\"");
@@ -31,6 +32,14 @@ Result<double> setting_value(const std::string& key, const json& value) {
     double named = 0.0;
     if (auto why = settings::value_from_name(*field, value.get<std::string>(), named)) return make_error(key + ": " + *why);
     return named;
+  }
+  if (value.is_object() && !field->object_key.empty()) {  // {"target_relative_mse": 0.015}
+    const std::string inner(field->object_key);
+    if (value.size() != 1 || !value.contains(inner) || !value[inner].is_number())
+      return make_error(key + ": expected {\"" + inner + "\": number}");
+    const double number = value[inner].get<double>();
+    if (auto why = settings::check_number(*field, number)) return make_error(key + "." + inner + ": " + *why);
+    return number;
   }
   return make_error(key + ": expected a number, a boolean, a choice name or \"auto\"");
 }

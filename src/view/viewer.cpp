@@ -116,6 +116,7 @@ Status Viewer::make_renderer() {
   if (!renderer) return renderer.error();
   renderer_ = std::move(*renderer);
   applied_settings_ = core_->state().settings;
+  quality_camera_.reset();  // a new renderer chose for its scene camera: choose again for the shown one
   return {};
 }
 

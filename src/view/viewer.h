@@ -62,6 +62,7 @@ class Viewer {
   // viewer_frame.cpp
   Status frame();
   Status prepare_frame(std::uint32_t display_width, std::uint32_t display_height);
+  Status requalify(std::uint32_t height);  // render.quality: a new choice when the camera moved
   Status render_into(const TargetImage& target);
   Status finish_oldest();  // waits for the oldest frame in flight
   Status finish_all();
@@ -104,6 +105,8 @@ class Viewer {
   std::optional<ViewerCore> core_;
   world::WorldState state_;
   settings::RenderSettings applied_settings_;
+  // render.quality: the camera the renderer's choice was last made for (a new choice per shot).
+  std::optional<scene::CameraState> quality_camera_;
   std::uint32_t internal_width_ = 0, internal_height_ = 0;
   std::uint32_t display_width_ = 0, display_height_ = 0;
 

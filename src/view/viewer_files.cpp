@@ -114,6 +114,23 @@ Status Viewer::write_state() const {
   json["toggles"] = {{"ui", state.toggles.ui}, {"hud", state.toggles.hud}, {"help", state.toggles.help},
                      {"bones", state.toggles.bones}, {"proxies", state.toggles.proxies}, {"grid", state.toggles.grid},
                      {"wireframe", state.toggles.wireframe}};
+  // render.quality: the settings the renderer chose for the current shot, and why.
+  if (renderer_ && renderer_->quality().automatic) {
+    const quality::QualityChoice& choice = renderer_->quality();
+    const settings::RenderSettings& chosen = choice.settings;
+    json["quality"] = {{"choice", quality::describe(choice)},
+                       {"target_relative_mse", choice.target},
+                       {"predicted_relative_mse", choice.predicted},
+                       {"met", choice.met},
+                       {"sh_order", chosen.sh_order},
+                       {"receiver_scale", chosen.receiver_scale},
+                       {"upsampling", std::string(settings::name_of(chosen.upsampling))},
+                       {"shadow_eta", renderer_->frame().shadow_eta()},
+                       {"proxy_lod", std::string(settings::name_of(chosen.proxy_lod))},
+                       {"reasons", choice.reasons}};
+  } else {
+    json["quality"] = "manual";
+  }
   json["environment"] = scene_.environment.type == scene::Environment::Type::map ? scene_.environment.map_path : std::string("sky");
   std::ofstream out(options_.state_out);
   if (!out) return make_error(options_.state_out.string() + ": cannot write the viewer state");

@@ -109,6 +109,31 @@ Status Viewer::prepare_frame(std::uint32_t display_width, std::uint32_t display_
     }
   }
   evaluate_world();
+  return requalify(height);
+}
+
+// render.quality: a new choice when the camera moved since the last one (the shot changed); the
+// renderer rebuilds only when the chosen settings differ.
+Status Viewer::requalify(std::uint32_t height) {
+  const settings::RenderSettings& requested = core_->state().settings;
+  if (requested.quality == settings::kQualityManual) {
+    quality_camera_.reset();
+    return {};
+  }
+  const scene::CameraState& camera = state_.camera;
+  if (quality_camera_ && quality_camera_->eye == camera.eye && quality_camera_->target == camera.target &&
+      quality_camera_->fov_y_degrees == camera.fov_y_degrees)
+    return {};
+  auto choice = renderer_->choose_quality(requested, state_.time_s, camera, height);
+  if (!choice) {
+    core_->state().message = "quality: " + choice.message();
+    return {};
+  }
+  if (choice->settings != renderer_->frame().settings())
+    if (Status s = finish_all(); !s) return s;
+  if (Status s = renderer_->apply_choice(*choice, state_.time_s, camera, internal_width_, internal_height_); !s)
+    core_->state().message = "quality: " + s.message();
+  quality_camera_ = camera;
   return {};
 }
 
@@ -194,6 +219,10 @@ HudInfo Viewer::hud_info() const {
     hud.proxies = world_->proxy_count();
     hud.receivers = renderer_->config().receiver_count();
     hud.shadow_eta = renderer_->frame().shadow_eta();
+    if (renderer_->quality().automatic) {
+      hud.quality = quality::describe(renderer_->quality());
+      hud.quality_reasons = renderer_->quality().reasons;
+    }
     for (const auto& model : world_->models())
       for (const auto& mesh : model->character.meshes)
         for (const auto& primitive : mesh.primitives) hud.triangles += primitive.indices.size() / 3;

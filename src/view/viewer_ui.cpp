@@ -77,6 +77,10 @@ void draw_hud(UiContext& ui, UiRequests& requests) {
     }
     ImGui::TextUnformatted(clips.c_str());
   }
+  if (!hud.quality.empty()) {
+    ImGui::TextUnformatted(hud.quality.c_str());
+    for (const std::string& reason : hud.quality_reasons) ImGui::Text("  %s", reason.c_str());
+  }
   if (!hud.passes.empty()) {
     ImGui::Text("passes (%s):", hud.pass_clock.c_str());
     for (const PassTime& pass : hud.passes) ImGui::Text("  %-20s %7.2f ms", pass.name.c_str(), pass.ms);
@@ -168,8 +172,18 @@ void draw_settings(UiContext& ui) {
           }
           if (automatic) break;
         }
+        if (!field.named.empty()) {  // the names as a combo ("manual", "balanced", ...); a number below
+          const auto current = settings::value_name(field, value);
+          if (ImGui::BeginCombo(key.c_str(), current ? std::string(*current).c_str() : "target")) {
+            for (const settings::NamedValue& named : field.named)
+              if (ImGui::Selectable(std::string(named.name).c_str(), named.value == value)) value = named.value, changed = true;
+            ImGui::EndCombo();
+          }
+          if (settings::check_number(field, value)) break;  // a sentinel ("manual"): no number to slide
+        }
         float v = float(value);
-        changed = ImGui::SliderFloat(key.c_str(), &v, float(field.ui_min), float(field.ui_max), "%.3g");
+        changed = ImGui::SliderFloat((field.named.empty() ? key : key + " target").c_str(), &v, float(field.ui_min),
+                                     float(field.ui_max), "%.3g") || changed;
         value = v;
         break;
       }

@@ -43,6 +43,8 @@ struct HudInfo {
   std::size_t proxies = 0, triangles = 0;
   std::uint64_t receivers = 0;
   float shadow_eta = 0.0f;  // η of shadows in use (the setting, or from the lighting when auto)
+  std::string quality;                       // render.quality's choice (quality::describe), empty when manual
+  std::vector<std::string> quality_reasons;  // and why, one line per setting
   std::uint32_t display_width = 0, display_height = 0, internal_width = 0, internal_height = 0;
   std::string present;  // "FIFO", "offscreen", ...
   int swapchain_recreations = 0;

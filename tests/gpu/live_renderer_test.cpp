@@ -34,6 +34,8 @@ std::shared_ptr<const world::World> default_world(scene::Scene scene = scene::de
 // A valid value of `field` other than the default's.
 double other_value(const settings::Field& field, const settings::RenderSettings& defaults) {
   const double current = field.get(defaults);
+  // A field with named values (render.quality: "manual" → "high") takes its last name.
+  if (!field.named.empty() && field.named.back().value != current) return field.named.back().value;
   switch (field.kind) {
     case settings::FieldKind::boolean: return current != 0.0 ? 0.0 : 1.0;
     case settings::FieldKind::choice:

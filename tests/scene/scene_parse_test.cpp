@@ -205,6 +205,32 @@ TEST(SceneParse, ShadowEtaAutoReadsAsEtaFromTheLightingAndIsWrittenBack) {
   EXPECT_EQ(again->render.shadow_eta, settings::kEtaFromLighting);
 }
 
+// render.quality: "manual" (the default), a named level or {"target_relative_mse": x}, each
+// written back in the form it was read.
+TEST(SceneParse, QualityReadsItsThreeFormsAndWritesThemBack) {
+  const std::pair<const char*, float> cases[] = {{R"("manual")", settings::kQualityManual},
+                                                 {R"("balanced")", 0.015f},
+                                                 {R"("draft")", 0.02f},
+                                                 {R"({"target_relative_mse": 0.011})", 0.011f}};
+  for (const auto& [form, value] : cases) {
+    const std::string text = std::string(R"({"schema_version": 1, "render": {"quality": )") + form + "}}";
+    auto scene = parse_scene(text, "quality.json");
+    ASSERT_TRUE(scene.ok()) << scene.message();
+    EXPECT_EQ(scene->render.quality, value) << form;
+    auto written = to_json(*scene);
+    ASSERT_TRUE(written.ok()) << written.message();
+    auto again = parse_scene(*written, "again.json");
+    ASSERT_TRUE(again.ok()) << again.message();
+    EXPECT_EQ(again->render, scene->render) << form;
+  }
+  auto target = parse_scene(R"({"schema_version": 1, "render": {"quality": {"target_relative_mse": 0.011}}})", "t.json");
+  ASSERT_TRUE(target.ok());
+  auto text = to_json(*target);
+  ASSERT_TRUE(text.ok());
+  EXPECT_NE(text->find("\"target_relative_mse\": 0.011"), std::string::npos) << *text;
+  EXPECT_EQ(parse_ok(R"({"schema_version": 1})").render.quality, settings::kQualityManual);
+}
+
 TEST(SceneParse, OrbitCamera) {
   const Scene s = parse_ok(R"({"schema_version": 1, "camera": {"type": "orbit", "target": [1, 1, 1],
       "distance": 7, "elevation_degrees": 25, "start_azimuth_degrees": 90,

@@ -35,7 +35,7 @@ TEST(SettingsFields, OneRowPerMemberEachWritingOnlyItsMember) {
     }
     EXPECT_EQ(classify_change(defaults, changed), field.needs) << field.key;
   }
-  EXPECT_EQ(fields().size(), 22u);  // the members named in fields.cpp's structured binding
+  EXPECT_EQ(fields().size(), 23u);  // the members named in fields.cpp's structured binding
 }
 
 TEST(SettingsFields, LimitsAndMessages) {
@@ -73,6 +73,25 @@ TEST(SettingsFields, LimitsAndMessages) {
   EXPECT_EQ(*check_value(*tau, 0.0), "must be > 0 (got 0)");
   EXPECT_EQ(*check_value(*exposure, std::numeric_limits<double>::infinity()), "must be a finite number");
   EXPECT_FALSE(check_value(*exposure, -3.5));
+  // render.quality: "manual" (0, refused as a number), the named levels, or a target in (0, 1].
+  const Field* quality = find_field("quality");
+  ASSERT_TRUE(quality);
+  EXPECT_EQ(quality->object_key, "target_relative_mse");
+  EXPECT_FALSE(check_value(*quality, kQualityManual));
+  EXPECT_EQ(value_name(*quality, kQualityManual), "manual");
+  EXPECT_EQ(value_name(*quality, double(0.015f)), "balanced");
+  EXPECT_FALSE(value_name(*quality, 0.0123));
+  EXPECT_EQ(*check_number(*quality, 0.0), "must be > 0 or one of \"manual\", \"draft\", \"balanced\", \"high\" (got 0)");
+  EXPECT_EQ(*check_number(*quality, 1.5), "must be <= 1 or one of \"manual\", \"draft\", \"balanced\", \"high\" (got 1.5)");
+  EXPECT_EQ(*check_value(*quality, -0.01), "must be > 0 or one of \"manual\", \"draft\", \"balanced\", \"high\" (got -0.01)");
+  EXPECT_FALSE(check_number(*quality, 0.02));  // draft's value as a number
+  EXPECT_FALSE(value_from_name(*quality, "high", named));
+  EXPECT_EQ(named, double(0.0125f));
+  EXPECT_EQ(*value_from_name(*quality, "best", named),
+            "unknown value \"best\" (expected {\"target_relative_mse\": number} or one of \"manual\", \"draft\", "
+            "\"balanced\", \"high\")");
+  EXPECT_TRUE(accepts_names(*quality));
+  EXPECT_FALSE(accepts_names(*indirect_eta));
   RenderSettings bad;
   bad.receiver_scale = 5;
   EXPECT_EQ(*check_settings(bad), "receiver_scale: must be 1, 2, 4 or 8 (got 5)");
