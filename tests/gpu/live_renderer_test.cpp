@@ -96,6 +96,43 @@ TEST_F(LiveRendererTest, EveryFieldChangedInPlaceMatchesAFreshRenderer) {
   expect_same_frame(*resized, *expected, "output 48x40 in place");
 }
 
+// The VSGL sender exposure (Embree, about a second per model) is computed only where VSGL needs
+// it: not for a renderer created with indirect_method proxy; on a live switch to vsgl once per
+// model, not per instance (the crowd's 20 characters share one model), and not again when
+// switched back and forth; the switched renderer renders what one created with vsgl renders.
+TEST_F(LiveRendererTest, SenderExposureIsComputedOnFirstVsglUseOncePerModel) {
+  auto world = default_world(scene::crowd_scene());
+  ASSERT_TRUE(world);
+  ASSERT_GT(world->instances().size(), world->models().size()) << "the crowd's characters share a model";
+  settings::RenderSettings proxy = world->scene().render;
+  proxy.indirect_method = settings::IndirectMethod::proxy;
+  settings::RenderSettings vsgl = proxy;
+  vsgl.indirect_method = settings::IndirectMethod::vsgl;
+  auto live = SceneRenderer::create(context(), world, proxy, kSize, kSize);
+  ASSERT_TRUE(live.ok()) << live.message();
+  ASSERT_TRUE((*live)->render(kFrame).ok());
+  EXPECT_EQ((*live)->sender_exposure_computations(), 0u) << "indirect_method proxy needs no sender exposure";
+
+  ASSERT_TRUE((*live)->apply_settings(vsgl, kSize, kSize).ok());
+  EXPECT_EQ((*live)->sender_exposure_computations(), world->models().size());
+  auto switched = (*live)->render(kFrame);
+  ASSERT_TRUE(switched.ok()) << switched.message();
+  auto fresh = SceneRenderer::create(context(), world, vsgl, kSize, kSize);
+  ASSERT_TRUE(fresh.ok()) << fresh.message();
+  EXPECT_EQ((*fresh)->sender_exposure_computations(), world->models().size());
+  auto expected = (*fresh)->render(kFrame);
+  ASSERT_TRUE(expected.ok()) << expected.message();
+  expect_same_frame(*switched, *expected, "indirect_method vsgl switched in place");
+
+  ASSERT_TRUE((*live)->apply_settings(proxy, kSize, kSize).ok());
+  ASSERT_TRUE((*live)->render(kFrame).ok());
+  ASSERT_TRUE((*live)->apply_settings(vsgl, kSize, kSize).ok());
+  auto again = (*live)->render(kFrame);
+  ASSERT_TRUE(again.ok()) << again.message();
+  EXPECT_EQ((*live)->sender_exposure_computations(), world->models().size()) << "kept, not recomputed";
+  expect_same_frame(*again, *expected, "indirect_method vsgl after proxy and back");
+}
+
 TEST_F(LiveRendererTest, SceneTimeRendersTheFrameAndItsGolden) {
   scene::Scene scene = scene::default_scene();
   scene.output.width = scene.output.height = 256;
