@@ -3,8 +3,11 @@
 // renders what the frame number renders (and today's goldens); a camera override renders that
 // camera; a caller's image receives the readback's pixels; the GPU skins the world state's poses
 // as the path tracer's CPU skinning does.
+#include <algorithm>
 #include <cstring>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "gpu/scene_renderer.h"
 #include "gpu/transfer.h"
@@ -131,6 +134,35 @@ TEST_F(LiveRendererTest, SenderExposureIsComputedOnFirstVsglUseOncePerModel) {
   ASSERT_TRUE(again.ok()) << again.message();
   EXPECT_EQ((*live)->sender_exposure_computations(), world->models().size()) << "kept, not recomputed";
   expect_same_frame(*again, *expected, "indirect_method vsgl after proxy and back");
+}
+
+// Only the target buffers upsample_composite.comp reads as texels (its receivers and shaded
+// bindings) have uniform texel usage, each with its view; the other targets have neither
+// (frame_resources.cpp keeps the one list). With and without supersampling (its sample targets).
+TEST_F(LiveRendererTest, TexelUsageOnlyOnTheTargetsReadAsTexels) {
+  auto world = default_world();
+  ASSERT_TRUE(world);
+  settings::RenderSettings supersampled = world->scene().render;
+  supersampled.antialiasing = settings::Antialiasing::ssaa2;
+  auto renderer = SceneRenderer::create(context(), world, world->scene().render, kSize, kSize);
+  ASSERT_TRUE(renderer.ok()) << renderer.message();
+  for (const settings::RenderSettings& render : {world->scene().render, supersampled}) {
+    ASSERT_TRUE((*renderer)->apply_settings(render, kSize, kSize).ok());
+    std::vector<std::string> texel_targets;
+    std::vector<std::string> allocated;
+    for (const SoftGiFrame::TargetBufferInfo& target : (*renderer)->frame().target_buffers()) {
+      if (target.buffer->handle() == VK_NULL_HANDLE) continue;  // unused by this configuration
+      allocated.emplace_back(target.name);
+      const bool texel_usage = (target.buffer->usage() & VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT) != 0;
+      EXPECT_EQ(texel_usage, target.texels) << target.name;
+      EXPECT_EQ(target.buffer->texel_view() != VK_NULL_HANDLE, target.texels) << target.name;
+      if (target.texels) texel_targets.emplace_back(target.name);
+    }
+    EXPECT_EQ(texel_targets, (std::vector<std::string>{"receivers", "shaded"}));
+    const bool samples = std::find(allocated.begin(), allocated.end(), "sample_hdr") != allocated.end();
+    EXPECT_EQ(samples, render.antialiasing != settings::Antialiasing::off) << "the sample targets were checked";
+    ASSERT_TRUE((*renderer)->render(kFrame).ok());
+  }
 }
 
 TEST_F(LiveRendererTest, SceneTimeRendersTheFrameAndItsGolden) {
