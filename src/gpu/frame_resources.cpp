@@ -1,6 +1,9 @@
 // SoftGiFrame's resources: the targets sized by the frame configuration, the ring slots, the
 // uploaded tables, and static meshes.
+#include <array>
 #include <cstring>
+#include <string_view>
+#include <type_traits>
 
 #include "gpu/context.h"
 #include "gpu/soft_gi_frame.h"
@@ -23,6 +26,41 @@ std::vector<glm::vec4> to_vec4(std::span<const glm::vec3> values, float w) {
   out.reserve(values.size());
   for (const auto& value : values) out.emplace_back(value, w);
   return out;
+}
+
+// Every target buffer of `targets`: its name, its size for `config` (0: not used by it) and
+// whether upsample_composite.comp reads it as texels (Buffer::add_texel_view says why: a Receiver
+// is two RGBA32F texels, position_depth and normal). The one list of those: only they get
+// uniform texel usage and a view. `TargetsT`: SoftGiFrame::Targets, const or not.
+template <class TargetsT>
+auto target_rows(TargetsT& targets, const FrameConfig& config, std::uint32_t tiles) {
+  using BufferT = std::conditional_t<std::is_const_v<TargetsT>, const Buffer, Buffer>;
+  struct Row {
+    std::string_view name;
+    BufferT* buffer;
+    VkDeviceSize bytes;
+    bool texels;
+  };
+  const VkDeviceSize receivers = config.receiver_count();
+  const VkDeviceSize pixels = VkDeviceSize(config.width) * config.height;
+  const VkDeviceSize samples = VkDeviceSize(config.shading_width()) * config.shading_height();
+  const bool supersampled = config.supersampling() > 1;
+  const VkDeviceSize coefficients = VkDeviceSize(config.render.sh_order) * VkDeviceSize(config.render.sh_order);
+  return std::array{
+      Row{"receivers", &targets.receivers, receivers * sizeof(gpu_layout::Receiver), true},
+      Row{"log_occlusion", &targets.log_occlusion, receivers * coefficients * sizeof(float), false},
+      Row{"direct", &targets.direct, receivers * sizeof(glm::vec4), false},
+      Row{"indirect", &targets.indirect, receivers * sizeof(glm::vec4), false},
+      Row{"shaded", &targets.shaded, receivers * sizeof(glm::vec4), true},
+      Row{"irradiance", &targets.irradiance, samples * sizeof(glm::vec4), false},
+      Row{"hdr", &targets.hdr, pixels * sizeof(glm::vec4), false},
+      Row{"ldr", &targets.ldr, pixels * sizeof(std::uint32_t), false},
+      Row{"sample_hdr", &targets.sample_hdr, supersampled ? samples * sizeof(glm::vec4) : 0, false},
+      Row{"sample_ldr", &targets.sample_ldr, supersampled ? samples * sizeof(std::uint32_t) : 0, false},
+      Row{"tile_counts", &targets.tile_counts, VkDeviceSize(tiles) * sizeof(std::uint32_t), false},
+      Row{"vsgl_partials", &targets.vsgl_partials, VsglLightsPass::partials_bytes(), false},
+      Row{"vsgl_lights", &targets.vsgl_lights, VsglLightsPass::lights_bytes(), false},
+  };
 }
 
 }  // namespace
@@ -83,44 +121,25 @@ Status SoftGiFrame::build_targets() {
   if (!rsm_depth) return rsm_depth.error();
   targets.rsm_depth = std::move(*rsm_depth);
 
-  const VkDeviceSize receivers = config.receiver_count();
-  const VkDeviceSize pixels = VkDeviceSize(config.width) * config.height;
-  const VkDeviceSize samples = VkDeviceSize(config.shading_width()) * config.shading_height();
-  const bool supersampled = config.supersampling() > 1;
-  const VkDeviceSize coefficients = VkDeviceSize(config.render.sh_order) * VkDeviceSize(config.render.sh_order);
-  struct Target {
-    Buffer* buffer;
-    VkDeviceSize bytes;
-  };
-  const Target buffers[] = {
-      {&targets.receivers, receivers * sizeof(gpu_layout::Receiver)},
-      {&targets.log_occlusion, receivers * coefficients * sizeof(float)},
-      {&targets.direct, receivers * sizeof(glm::vec4)},
-      {&targets.indirect, receivers * sizeof(glm::vec4)},
-      {&targets.shaded, receivers * sizeof(glm::vec4)},
-      {&targets.irradiance, samples * sizeof(glm::vec4)},
-      {&targets.hdr, pixels * sizeof(glm::vec4)},
-      {&targets.ldr, pixels * sizeof(std::uint32_t)},
-      {&targets.sample_hdr, supersampled ? samples * sizeof(glm::vec4) : 0},
-      {&targets.sample_ldr, supersampled ? samples * sizeof(std::uint32_t) : 0},
-      {&targets.tile_counts, VkDeviceSize(tiles_x()) * tiles_y() * sizeof(std::uint32_t)},
-      {&targets.vsgl_partials, VsglLightsPass::partials_bytes()},
-      {&targets.vsgl_lights, VsglLightsPass::lights_bytes()},
-  };
-  for (const auto& target : buffers) {
+  for (const auto& target : target_rows(targets, config, tiles_x() * tiles_y())) {
     if (target.bytes == 0) continue;  // not used by this configuration
-    auto made = Buffer::create(context_, target.bytes, kStorage | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
-                               MemoryKind::device_local);
+    const VkBufferUsageFlags usage = kStorage | (target.texels ? VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT : 0);
+    auto made = Buffer::create(context_, target.bytes, usage, MemoryKind::device_local);
     if (!made) return made.error();
     *target.buffer = std::move(*made);
+    if (target.texels)
+      if (Status s = target.buffer->add_texel_view(context_, VK_FORMAT_R32G32B32A32_SFLOAT); !s) return s;
   }
-  // upsample_composite.comp reads its taps as texels (Buffer::add_texel_view says why); a
-  // Receiver is two texels (position_depth, normal).
-  for (Buffer* texels : {&targets.receivers, &targets.shaded})
-    if (Status s = texels->add_texel_view(context_, VK_FORMAT_R32G32B32A32_SFLOAT); !s) return s;
   targets_ = std::move(targets);
   output_staging_ = Image();
   return {};
+}
+
+std::vector<SoftGiFrame::TargetBufferInfo> SoftGiFrame::target_buffers() const {
+  std::vector<TargetBufferInfo> out;
+  for (const auto& row : target_rows(targets_, config_, tiles_x() * tiles_y()))
+    out.push_back({row.name, row.buffer, row.texels});
+  return out;
 }
 
 Status SoftGiFrame::build_slots() {

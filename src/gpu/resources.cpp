@@ -33,6 +33,7 @@ Result<Buffer> Buffer::create(const Context& context, VkDeviceSize size, VkBuffe
   info.usage = usage;
   if (memory == MemoryKind::device_local) info.usage |= VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  buffer.usage_ = info.usage;
   PROXYGI_VK_TRY(vkCreateBuffer(buffer.device_, &info, nullptr, &buffer.buffer_));
 
   VkMemoryRequirements requirements{};
@@ -51,6 +52,8 @@ Result<Buffer> Buffer::create(const Context& context, VkDeviceSize size, VkBuffe
 
 Status Buffer::add_texel_view(const Context& context, VkFormat format) {
   if (texel_view_ != VK_NULL_HANDLE) return make_error("gpu buffer: texel view added twice");
+  if (!(usage_ & VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT))
+    return make_error("gpu buffer: a texel view needs VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT usage");
   auto bytes = texel_size(format);
   if (!bytes) return bytes.error();
   const VkDeviceSize texels = size_ / *bytes;
@@ -88,6 +91,7 @@ Buffer& Buffer::operator=(Buffer&& other) noexcept {
     texel_view_ = std::exchange(other.texel_view_, VK_NULL_HANDLE);
     memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
     size_ = std::exchange(other.size_, 0);
+    usage_ = std::exchange(other.usage_, 0);
     mapped_ = std::exchange(other.mapped_, nullptr);
   }
   return *this;

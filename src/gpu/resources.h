@@ -37,6 +37,7 @@ class Buffer {
 
   VkBuffer handle() const { return buffer_; }
   VkDeviceSize size() const { return size_; }
+  VkBufferUsageFlags usage() const { return usage_; }  // as created (device_local adds transfer src/dst)
   // Persistently mapped pointer for host_visible buffers, nullptr otherwise.
   void* mapped() const { return mapped_; }
   bool host_visible() const { return mapped_ != nullptr; }
@@ -44,7 +45,8 @@ class Buffer {
   // Adds a view of the whole buffer as texels of `format` (a uniform texel buffer: the buffer
   // needs VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT). Shaders on lavapipe read
   // texels with vector gathers, where a storage-buffer read is a loop over the SIMD lanes.
-  // Fails when the buffer holds more texels than the device's maxTexelBufferElements.
+  // Fails when the buffer was created without that usage, or holds more texels than the
+  // device's maxTexelBufferElements.
   Status add_texel_view(const Context& context, VkFormat format);
   VkBufferView texel_view() const { return texel_view_; }  // VK_NULL_HANDLE until added
 
@@ -55,6 +57,7 @@ class Buffer {
   VkBufferView texel_view_ = VK_NULL_HANDLE;
   VkDeviceMemory memory_ = VK_NULL_HANDLE;
   VkDeviceSize size_ = 0;
+  VkBufferUsageFlags usage_ = 0;
   void* mapped_ = nullptr;
 };
 

@@ -62,13 +62,10 @@ Status SceneRenderer::upload_instances() {
     std::shared_ptr<const SkinBindPose> bind_pose;
     std::shared_ptr<const Buffer> indices, uvs;
     std::shared_ptr<const VsglTriangleOrders> vsgl_orders;
-    std::shared_ptr<const Buffer> vsgl_exposure;
   };
   std::map<std::tuple<const world::Model*, std::size_t, std::size_t>, Shared> shared;
   using AllGroups = std::array<anim::BoneGroups, settings::kVsglLightsPerCharacter.size()>;
   std::map<const world::Model*, AllGroups> bone_groups;  // per model, for each K
-  // Per model, its primitives in anim::pose_meshes order (the order of the loops below).
-  std::map<const world::Model*, std::vector<std::vector<float>>> exposures;
   for (std::size_t index = 0; index < world_->instances().size(); ++index) {
     const world::CharacterInstance& source = world_->instances()[index];
     const MaterialTextures* textures = nullptr;
@@ -81,12 +78,6 @@ Status SceneRenderer::upload_instances() {
       for (std::size_t k = 0; k < groups.size(); ++k)
         groups[k] = anim::character_bone_groups(character, settings::kVsglLightsPerCharacter[k]);
     }
-    if (!exposures.contains(source.model)) {
-      auto exposure = ref::rest_pose_sender_exposure(character);
-      if (!exposure) return make_error(source.model->file.string() + ": " + exposure.message());
-      exposures[source.model] = std::move(*exposure);
-    }
-    std::size_t posed_primitive = 0;  // index into exposures[source.model]
     for (std::size_t node = 0; node < character.nodes.size(); ++node) {
       const anim::Node& n = character.nodes[node];
       if (n.mesh < 0) continue;
@@ -158,27 +149,51 @@ Status SceneRenderer::upload_instances() {
           auto orders = upload_vsgl_orders(context_, character, int(node), original, bone_groups[source.model]);
           if (!orders) return orders.error();
           buffers.vsgl_orders = std::move(*orders);
-          const std::vector<std::vector<float>>& exposure = exposures[source.model];
-          if (posed_primitive >= exposure.size() || exposure[posed_primitive].size() != primitive.positions.size())
-            return make_error(source.model->file.string() + ": node " + std::to_string(node) +
-                              ": sender exposure does not match the primitive's vertices");
-          auto exposed = create_buffer_with_data(context_, as_bytes(std::span<const float>(exposure[posed_primitive])),
-                                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-          if (!exposed) return exposed.error();
-          buffers.vsgl_exposure = std::make_shared<const Buffer>(std::move(*exposed));
         }
-        ++posed_primitive;
         draw.indices.push_back(buffers.indices);
         draw.index_counts.push_back(std::uint32_t(primitive.indices.size()));
         draw.uvs.push_back(buffers.uvs);
         draw.vsgl_orders.push_back(buffers.vsgl_orders);
-        draw.vsgl_exposure.push_back(buffers.vsgl_exposure);
+        draw.vsgl_exposure.push_back(nullptr);  // ensure_sender_exposure, on first need
         draw.materials.push_back(textures->binding(primitive.material));
       }
       draw.morph_offset = std::size_t(anim::morph_weight_offset(character, int(node)));
       instance->meshes.push_back(std::move(draw));
     }
     instances_.push_back(std::move(instance));
+  }
+  return {};
+}
+
+Status SceneRenderer::ensure_sender_exposure() {
+  for (std::size_t index = 0; index < instances_.size(); ++index) {
+    const world::Model* model = world_->instances()[index].model;
+    auto cached = sender_exposure_.find(model);
+    if (cached == sender_exposure_.end()) {
+      // Per primitive in anim::pose_meshes order: the instance's meshes and their primitives in order.
+      auto exposure = ref::rest_pose_sender_exposure(model->character);
+      if (!exposure) return make_error(model->file.string() + ": " + exposure.message());
+      ++sender_exposure_computations_;
+      std::vector<std::shared_ptr<const Buffer>> buffers;
+      for (const std::vector<float>& per_vertex : *exposure) {
+        auto exposed = create_buffer_with_data(context_, as_bytes(std::span<const float>(per_vertex)),
+                                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        if (!exposed) return exposed.error();
+        buffers.push_back(std::make_shared<const Buffer>(std::move(*exposed)));
+      }
+      cached = sender_exposure_.emplace(model, std::move(buffers)).first;
+    }
+    const std::vector<std::shared_ptr<const Buffer>>& buffers = cached->second;
+    std::size_t posed_primitive = 0;
+    for (MeshDraw& mesh : instances_[index]->meshes)
+      for (std::size_t i = 0; i < mesh.vsgl_exposure.size(); ++i, ++posed_primitive) {
+        const SkinGroup::Primitive& skinned = skin_groups_[mesh.group].primitives[i];
+        if (posed_primitive >= buffers.size() ||
+            buffers[posed_primitive]->size() != skinned.bind_pose->vertex_count * sizeof(float))
+          return make_error(model->file.string() + ": node " + std::to_string(mesh.node) +
+                            ": sender exposure does not match the primitive's vertices");
+        mesh.vsgl_exposure[i] = buffers[posed_primitive];
+      }
   }
   return {};
 }

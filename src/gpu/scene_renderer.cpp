@@ -65,6 +65,8 @@ Result<std::unique_ptr<SceneRenderer>> SceneRenderer::create(Context& context, s
     renderer->slots_.back().in_flight = std::move(*in_flight);
   }
   if (Status s = renderer->upload_instances(); !s) return s.error();
+  if (settings.indirect_method == settings::IndirectMethod::vsgl)
+    if (Status s = renderer->ensure_sender_exposure(); !s) return s.error();
   renderer->static_meshes_method_ = settings.method;
   if (Status s = renderer->upload_static_meshes(); !s) return s.error();
   auto config = renderer->make_config(settings, width, height);
@@ -159,6 +161,8 @@ Status SceneRenderer::apply_resolved(const settings::RenderSettings& settings, s
     if (slot.busy) return make_error("apply_settings: finish every begun frame first");
   if (Status waited = wait_all(); !waited) return waited;
   const settings::Needs needs = settings::classify_change(frame_->settings(), settings);
+  if (settings.indirect_method == settings::IndirectMethod::vsgl)
+    if (Status exposed = ensure_sender_exposure(); !exposed) return exposed;
   const bool method_changed = settings.method != frame_->settings().method;
   if (method_changed) {  // the vertex method draws a tessellated ground
     static_meshes_method_ = settings.method;
@@ -238,6 +242,8 @@ Result<std::vector<DrawItem>> SceneRenderer::prepare(const FrameRequest& request
         draws.back().first_vertex = mesh.group_instance * skinned_primitive.instance_stride;
         draws.back().vertices = skinned_primitive.bind_pose->vertex_count;
         draws.back().vsgl_exposure = mesh.vsgl_exposure[i].get();
+        if (render.indirect_method == settings::IndirectMethod::vsgl && !draws.back().vsgl_exposure)
+          return make_error("frame: instance " + std::to_string(index) + " has no sender exposure (internal)");
         if (by_bone_group) {
           draws.back().vsgl_indices = &mesh.vsgl_orders[i]->indices;
           draws.back().vsgl_group_first = mesh.vsgl_orders[i]->first[lights_order];

@@ -15,6 +15,7 @@
 #include <array>
 #include <chrono>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -176,12 +177,18 @@ class SceneRenderer {
   // The PRT field in use (null when none) and its records for the current lighting (twin tests).
   const prt::StaticTransferField* static_field() const { return static_field_.get(); }
   std::span<const float> static_records() const { return static_records_; }
+  // How many models' VSGL sender exposures (ref/sender_exposure.h) this renderer has computed.
+  // Each model's is computed once, on first need (created with, or changed in place to,
+  // render.indirect_method vsgl), shared by its instances and kept for the renderer's life.
+  std::size_t sender_exposure_computations() const { return sender_exposure_computations_; }
 
  private:
   struct ModelTextures;
   struct Instance;
   explicit SceneRenderer(Context& context);
   Status upload_instances();
+  // Computes (once per model) and binds every instance's sender exposures (scene_meshes.cpp).
+  Status ensure_sender_exposure();
   Status upload_static_meshes();  // ground (a quad, or the vertex method's grid) and static meshes
   Result<FrameConfig> make_config(const settings::RenderSettings& settings, std::uint32_t width,
                                   std::uint32_t height) const;
@@ -201,6 +208,9 @@ class SceneRenderer {
   std::vector<std::unique_ptr<ModelTextures>> model_textures_;  // one per world model
   std::vector<std::unique_ptr<Instance>> instances_;
   std::vector<SkinGroup> skin_groups_;  // per model mesh node: its instances skinned together
+  // Per model: its sender exposure buffers, one per primitive in anim::pose_meshes order.
+  std::map<const world::Model*, std::vector<std::shared_ptr<const Buffer>>> sender_exposure_;
+  std::size_t sender_exposure_computations_ = 0;
   std::vector<StaticMesh> static_meshes_;
   std::vector<std::unique_ptr<MaterialTextures>> static_textures_;  // the textures static_meshes_ bind
   settings::ShadingMethod static_meshes_method_ = settings::ShadingMethod::image_space;

@@ -13,6 +13,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -124,6 +125,16 @@ class SoftGiFrame {
   Result<image::ImageF> read_gbuffer_positions() const;
   Result<image::ImageF> read_gbuffer_normals() const;
   Result<image::ImageF> read_gbuffer_albedo() const;
+
+  // The target buffers by name ("receivers", "shaded", ...), empty ones (unused by this
+  // configuration) included; `texels`: upsample_composite.comp reads it through a texel view, and
+  // only those have VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT (frame_resources.cpp keeps the list).
+  struct TargetBufferInfo {
+    std::string_view name;
+    const Buffer* buffer = nullptr;
+    bool texels = false;
+  };
+  std::vector<TargetBufferInfo> target_buffers() const;
 
   // The frame's targets and tables (src/gpu/frame_resources.cpp).
   struct Targets {

@@ -12,8 +12,9 @@
 // by the vertex index: deterministic, independent of threads); ε = 1e-4 × the character's bounding
 // box diagonal (at least 1e-6 m). A vertex whose hemisphere is open (any convex closed mesh with
 // normals in its vertices' normal cones) gets exactly 1, one enclosed by a closed surface exactly 0.
-// Computed once per model in its rest pose (clip −1: buried parts stay buried as it moves), kept
-// and uploaded with the model's other shared buffers (gpu/scene_meshes.cpp). No visibility toward
+// Computed once per model in its rest pose (clip −1: buried parts stay buried as it moves), on
+// first need (a renderer with indirect_method vsgl), and kept by the renderer beside the model's
+// other shared buffers (SceneRenderer::ensure_sender_exposure, gpu/scene_meshes.cpp). No visibility toward
 // any receiver: the VPLs still shine through the body where they are exposed.
 //
 // Units: dimensionless in [0, 1]. Conventions: vertex order of each primitive as stored (the same

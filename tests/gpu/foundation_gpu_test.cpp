@@ -19,8 +19,9 @@ using ComputePatternTest = GpuTest;
 using RasterTriangleTest = GpuTest;
 using TexelViewTest = GpuTest;
 
-// Buffer::add_texel_view: one view over the whole buffer; a second one, or a format without a
-// known texel size, is an error that names the cause, and the first view stays.
+// Buffer::add_texel_view: one view over the whole buffer; a second one, a format without a
+// known texel size, or a buffer without uniform texel usage is an error that names the cause, and
+// the first view stays.
 TEST_F(TexelViewTest, AddsOneViewAndRefusesASecond) {
   auto buffer = Buffer::create(context(), 64 * sizeof(float[4]), VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
                                MemoryKind::device_local);
@@ -41,6 +42,15 @@ TEST_F(TexelViewTest, AddsOneViewAndRefusesASecond) {
   Status unknown = other->add_texel_view(context(), VK_FORMAT_R8_UNORM);
   ASSERT_FALSE(unknown.ok());
   EXPECT_NE(unknown.message().find("VkFormat"), std::string::npos) << unknown.message();
+
+  // A buffer created without uniform texel usage gets no view (an error, not a validation message).
+  auto storage = Buffer::create(context(), 256, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryKind::device_local);
+  ASSERT_TRUE(storage.ok()) << storage.message();
+  EXPECT_EQ(storage->usage() & VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT, 0u);
+  Status without = storage->add_texel_view(context(), VK_FORMAT_R32G32B32A32_SFLOAT);
+  ASSERT_FALSE(without.ok());
+  EXPECT_NE(without.message().find("UNIFORM_TEXEL_BUFFER"), std::string::npos) << without.message();
+  EXPECT_EQ(storage->texel_view(), VkBufferView(VK_NULL_HANDLE));
 }
 
 TEST_F(ComputePatternTest, WritesKnownIntegersExactly) {

@@ -4,8 +4,11 @@
 // camera; a caller's image receives the readback's pixels; the GPU skins the world state's poses
 // as the path tracer's CPU skinning does, and its one skin dispatch per model primitive for all
 // instances gives the vertices one dispatch per character gives.
+#include <algorithm>
 #include <cstring>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "gpu/scene_renderer.h"
 #include "gpu/skin_pass.h"
@@ -98,6 +101,72 @@ TEST_F(LiveRendererTest, EveryFieldChangedInPlaceMatchesAFreshRenderer) {
   auto expected = (*fresh)->render(kFrame);
   ASSERT_TRUE(expected.ok()) << expected.message();
   expect_same_frame(*resized, *expected, "output 48x40 in place");
+}
+
+// The VSGL sender exposure (Embree, about a second per model) is computed only where VSGL needs
+// it: not for a renderer created with indirect_method proxy; on a live switch to vsgl once per
+// model, not per instance (the crowd's 20 characters share one model), and not again when
+// switched back and forth; the switched renderer renders what one created with vsgl renders.
+TEST_F(LiveRendererTest, SenderExposureIsComputedOnFirstVsglUseOncePerModel) {
+  auto world = default_world(scene::crowd_scene());
+  ASSERT_TRUE(world);
+  ASSERT_GT(world->instances().size(), world->models().size()) << "the crowd's characters share a model";
+  settings::RenderSettings proxy = world->scene().render;
+  proxy.indirect_method = settings::IndirectMethod::proxy;
+  settings::RenderSettings vsgl = proxy;
+  vsgl.indirect_method = settings::IndirectMethod::vsgl;
+  auto live = SceneRenderer::create(context(), world, proxy, kSize, kSize);
+  ASSERT_TRUE(live.ok()) << live.message();
+  ASSERT_TRUE((*live)->render(kFrame).ok());
+  EXPECT_EQ((*live)->sender_exposure_computations(), 0u) << "indirect_method proxy needs no sender exposure";
+
+  ASSERT_TRUE((*live)->apply_settings(vsgl, kSize, kSize).ok());
+  EXPECT_EQ((*live)->sender_exposure_computations(), world->models().size());
+  auto switched = (*live)->render(kFrame);
+  ASSERT_TRUE(switched.ok()) << switched.message();
+  auto fresh = SceneRenderer::create(context(), world, vsgl, kSize, kSize);
+  ASSERT_TRUE(fresh.ok()) << fresh.message();
+  EXPECT_EQ((*fresh)->sender_exposure_computations(), world->models().size());
+  auto expected = (*fresh)->render(kFrame);
+  ASSERT_TRUE(expected.ok()) << expected.message();
+  expect_same_frame(*switched, *expected, "indirect_method vsgl switched in place");
+
+  ASSERT_TRUE((*live)->apply_settings(proxy, kSize, kSize).ok());
+  ASSERT_TRUE((*live)->render(kFrame).ok());
+  ASSERT_TRUE((*live)->apply_settings(vsgl, kSize, kSize).ok());
+  auto again = (*live)->render(kFrame);
+  ASSERT_TRUE(again.ok()) << again.message();
+  EXPECT_EQ((*live)->sender_exposure_computations(), world->models().size()) << "kept, not recomputed";
+  expect_same_frame(*again, *expected, "indirect_method vsgl after proxy and back");
+}
+
+// Only the target buffers upsample_composite.comp reads as texels (its receivers and shaded
+// bindings) have uniform texel usage, each with its view; the other targets have neither
+// (frame_resources.cpp keeps the one list). With and without supersampling (its sample targets).
+TEST_F(LiveRendererTest, TexelUsageOnlyOnTheTargetsReadAsTexels) {
+  auto world = default_world();
+  ASSERT_TRUE(world);
+  settings::RenderSettings supersampled = world->scene().render;
+  supersampled.antialiasing = settings::Antialiasing::ssaa2;
+  auto renderer = SceneRenderer::create(context(), world, world->scene().render, kSize, kSize);
+  ASSERT_TRUE(renderer.ok()) << renderer.message();
+  for (const settings::RenderSettings& render : {world->scene().render, supersampled}) {
+    ASSERT_TRUE((*renderer)->apply_settings(render, kSize, kSize).ok());
+    std::vector<std::string> texel_targets;
+    std::vector<std::string> allocated;
+    for (const SoftGiFrame::TargetBufferInfo& target : (*renderer)->frame().target_buffers()) {
+      if (target.buffer->handle() == VK_NULL_HANDLE) continue;  // unused by this configuration
+      allocated.emplace_back(target.name);
+      const bool texel_usage = (target.buffer->usage() & VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT) != 0;
+      EXPECT_EQ(texel_usage, target.texels) << target.name;
+      EXPECT_EQ(target.buffer->texel_view() != VK_NULL_HANDLE, target.texels) << target.name;
+      if (target.texels) texel_targets.emplace_back(target.name);
+    }
+    EXPECT_EQ(texel_targets, (std::vector<std::string>{"receivers", "shaded"}));
+    const bool samples = std::find(allocated.begin(), allocated.end(), "sample_hdr") != allocated.end();
+    EXPECT_EQ(samples, render.antialiasing != settings::Antialiasing::off) << "the sample targets were checked";
+    ASSERT_TRUE((*renderer)->render(kFrame).ok());
+  }
 }
 
 TEST_F(LiveRendererTest, SceneTimeRendersTheFrameAndItsGolden) {

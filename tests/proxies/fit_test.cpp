@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "proxies/box_lattice.h"
 #include "proxies/fit.h"
 #include "proxies/mesh_index.h"
 #include "proxies/point_sampling.h"
@@ -17,19 +18,12 @@ using testing::arm_character;
 using testing::box_character;
 using testing::box_primitive;
 
+using testing::box_sdf;
+
 TriangleSoup soup_of(const anim::Primitive& prim) {
   TriangleSoup soup;
-  soup.positions = prim.positions;
-  for (std::size_t i = 0; i < prim.indices.size(); i += 3)
-    soup.triangles.emplace_back(prim.indices[i], prim.indices[i + 1], prim.indices[i + 2]);
+  testing::add_to_soup(soup, prim);
   return soup;
-}
-
-// Signed distance of an axis-aligned box (negative inside).
-float box_sdf(const glm::vec3& p, const glm::vec3& lo, const glm::vec3& hi) {
-  const glm::vec3 c = 0.5f * (lo + hi), h = 0.5f * (hi - lo);
-  const glm::vec3 q = glm::abs(p - c) - h;
-  return glm::length(glm::max(q, glm::vec3(0.0f))) + std::min(std::max({q.x, q.y, q.z}), 0.0f);
 }
 
 TEST(MeshIndex, ClosestPointOnTriangleBeatsEverySampledPoint) {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "proxies/box_lattice.h"
 #include "proxies/fit.h"
 #include "proxies/mesh_index.h"
 #include "proxies/point_sampling.h"
@@ -21,18 +22,10 @@ using testing::box_primitive;
 
 const glm::vec3 kLo(-0.5f, -0.05f, -0.05f), kHi(0.5f, 0.05f, 0.05f);
 
-float box_sdf(const glm::vec3& p) {
-  const glm::vec3 c = 0.5f * (kLo + kHi), h = 0.5f * (kHi - kLo);
-  const glm::vec3 q = glm::abs(p - c) - h;
-  return glm::length(glm::max(q, glm::vec3(0.0f))) + std::min(std::max({q.x, q.y, q.z}), 0.0f);
-}
-
 // The bar's fitting points: a lattice on its faces and inside it (spacing 0.02 m).
 std::vector<glm::vec3> bar_points() {
   std::vector<glm::vec3> points;
-  for (float x = kLo.x; x <= kHi.x + 1e-4f; x += 0.02f)
-    for (float y = kLo.y; y <= kHi.y + 1e-4f; y += 0.02f)
-      for (float z = kLo.z; z <= kHi.z + 1e-4f; z += 0.02f) points.emplace_back(x, y, z);
+  testing::add_box_lattice(points, {kLo, kHi});
   return points;
 }
 
@@ -46,10 +39,7 @@ struct Bar {
   SphereObjective objective;
 
   explicit Bar(float slack) {
-    const anim::Primitive prim = box_primitive(kLo, kHi);
-    soup.positions = prim.positions;
-    for (std::size_t i = 0; i < prim.indices.size(); i += 3)
-      soup.triangles.emplace_back(prim.indices[i], prim.indices[i + 1], prim.indices[i + 2]);
+    testing::add_to_soup(soup, box_primitive(kLo, kHi));
     winding.build(soup, 16);
     grid = build_distance_grid(soup, winding, Box{kLo, kHi}, 0.01f, 0.6f);
     objective = {&grid, ball, directions, slack, 0.05f};
@@ -74,19 +64,8 @@ float worst_gap(const std::vector<glm::vec3>& points, const BoneSphereSet& set) 
 
 // Exact volume of the union outside the bar, m³, on a 5 mm lattice.
 float union_outside_volume(const BoneSphereSet& set) {
-  glm::vec3 lo(1e9f), hi(-1e9f);
-  for (const ClusterSphere& s : set.spheres()) lo = glm::min(lo, s.center - s.radius), hi = glm::max(hi, s.center + s.radius);
-  const float h = 0.005f;
-  int outside = 0;
-  for (float x = lo.x + 0.5f * h; x < hi.x; x += h)
-    for (float y = lo.y + 0.5f * h; y < hi.y; y += h)
-      for (float z = lo.z + 0.5f * h; z < hi.z; z += h) {
-        const glm::vec3 p(x, y, z);
-        bool in = false;
-        for (const ClusterSphere& s : set.spheres()) in = in || glm::length(p - s.center) <= s.radius;
-        outside += in && box_sdf(p) > 0.0f ? 1 : 0;
-      }
-  return float(outside) * h * h * h;
+  const testing::AxisBox bar[] = {{kLo, kHi}};
+  return testing::union_outside_volume(set.spheres(), bar);
 }
 
 TEST(SphereSet, ChainOfSmallerSpheresBeatsOneSphereOnOutsideVolumeAtEqualCoverage) {

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <memory>
 
+#include "proxies/box_lattice.h"
 #include "proxies/mesh_index.h"
 #include "proxies/point_sampling.h"
 #include "proxies/sphere_set_fit.h"
@@ -16,22 +17,8 @@
 namespace proxygi::proxies {
 namespace {
 
-const glm::vec3 kBarLo(-0.5f, -0.05f, -0.05f), kBarHi(0.5f, 0.05f, 0.05f);
-const glm::vec3 kCubeLo(-0.05f, 0.45f, -0.05f), kCubeHi(0.05f, 0.55f, 0.05f);
-
-float box_sdf(const glm::vec3& p, const glm::vec3& lo, const glm::vec3& hi) {
-  const glm::vec3 q = glm::abs(p - 0.5f * (lo + hi)) - 0.5f * (hi - lo);
-  return glm::length(glm::max(q, glm::vec3(0.0f))) + std::min(std::max({q.x, q.y, q.z}), 0.0f);
-}
-
-// Points of a box on a 0.02 m lattice (faces and inside), appended; returns their indices.
-std::vector<std::uint32_t> add_lattice(std::vector<glm::vec3>& points, const glm::vec3& lo, const glm::vec3& hi) {
-  std::vector<std::uint32_t> members;
-  for (float x = lo.x; x <= hi.x + 1e-4f; x += 0.02f)
-    for (float y = lo.y; y <= hi.y + 1e-4f; y += 0.02f)
-      for (float z = lo.z; z <= hi.z + 1e-4f; z += 0.02f) members.push_back(std::uint32_t(points.size())), points.emplace_back(x, y, z);
-  return members;
-}
+const testing::AxisBox kBar{{-0.5f, -0.05f, -0.05f}, {0.5f, 0.05f, 0.05f}};
+const testing::AxisBox kCube{{-0.05f, 0.45f, -0.05f}, {0.05f, 0.55f, 0.05f}};
 
 struct TwoParts {
   TriangleSoup soup;
@@ -44,18 +31,12 @@ struct TwoParts {
   SphereObjective objective;
 
   TwoParts() {
-    for (const auto& [lo, hi] : {std::pair{kBarLo, kBarHi}, std::pair{kCubeLo, kCubeHi}}) {
-      const anim::Primitive prim = testing::box_primitive(lo, hi);
-      const std::uint32_t base = std::uint32_t(soup.positions.size());
-      soup.positions.insert(soup.positions.end(), prim.positions.begin(), prim.positions.end());
-      for (std::size_t i = 0; i < prim.indices.size(); i += 3)
-        soup.triangles.emplace_back(base + prim.indices[i], base + prim.indices[i + 1], base + prim.indices[i + 2]);
-    }
+    for (const testing::AxisBox& box : {kBar, kCube}) testing::add_to_soup(soup, testing::box_primitive(box.lo, box.hi));
     winding.build(soup, 16);
-    grid = build_distance_grid(soup, winding, Box{kBarLo, kCubeHi}, 0.01f, 0.6f);
+    grid = build_distance_grid(soup, winding, Box{kBar.lo, kCube.hi}, 0.01f, 0.6f);
     objective = {&grid, ball, directions, 0.02f, 0.05f};
-    bar = add_lattice(points, kBarLo, kBarHi);
-    cube = add_lattice(points, kCubeLo, kCubeHi);
+    bar = testing::add_box_lattice(points, kBar);
+    cube = testing::add_box_lattice(points, kCube);
   }
   // The bar with one sphere, the cube with two.
   std::vector<std::unique_ptr<BoneSphereSet>> start() const {
@@ -69,22 +50,10 @@ struct TwoParts {
 
 // Exact volume of the union of every set's spheres outside both boxes, m³ (5 mm lattice).
 float union_outside_volume(const std::vector<std::unique_ptr<BoneSphereSet>>& sets) {
-  std::vector<glm::vec4> spheres;
-  for (const auto& set : sets)
-    for (const ClusterSphere& s : set->spheres()) spheres.emplace_back(s.center, s.radius);
-  glm::vec3 lo(1e9f), hi(-1e9f);
-  for (const glm::vec4& s : spheres) lo = glm::min(lo, glm::vec3(s) - s.w), hi = glm::max(hi, glm::vec3(s) + s.w);
-  const float h = 0.005f;
-  int outside = 0;
-  for (float x = lo.x + 0.5f * h; x < hi.x; x += h)
-    for (float y = lo.y + 0.5f * h; y < hi.y; y += h)
-      for (float z = lo.z + 0.5f * h; z < hi.z; z += h) {
-        const glm::vec3 p(x, y, z);
-        bool in = false;
-        for (const glm::vec4& s : spheres) in = in || glm::length(p - glm::vec3(s)) <= s.w;
-        outside += in && box_sdf(p, kBarLo, kBarHi) > 0.0f && box_sdf(p, kCubeLo, kCubeHi) > 0.0f ? 1 : 0;
-      }
-  return float(outside) * h * h * h;
+  std::vector<ClusterSphere> spheres;
+  for (const auto& set : sets) spheres.insert(spheres.end(), set->spheres().begin(), set->spheres().end());
+  const testing::AxisBox boxes[] = {kBar, kCube};
+  return testing::union_outside_volume(spheres, boxes);
 }
 
 std::size_t sphere_count(const std::vector<std::unique_ptr<BoneSphereSet>>& sets) {
