@@ -52,11 +52,13 @@ struct ChartRow {
   double character_luminance_ratio = 0.0;
   RegionErrors regions;       // measured only with --regions
   bool ground_bounce = true;  // proxy/ao/vertex: render.ground_bounce (label "no-ground-bounce" when off)
+  std::string antialiasing;  // render.antialiasing when not off ("ssaa2", "ssaa4": appended to the label); else empty
   bool pareto = false;    // on its scene's Pareto front (set by mark_pareto_fronts)
   bool is_default = false;  // the proxy method at the product's default setting (method "proxy" only)
 };
 
-// "proxy n4 k4 bilateral averaged", "proxy n4 k4 bilateral averaged no-ground-bounce", "path+guided 64 spp", ...
+// "proxy n4 k4 bilateral averaged", "proxy n4 k4 bilateral averaged no-ground-bounce", "proxy n4 k4 bilateral
+// averaged ssaa2", "path+guided 64 spp", ...
 std::string row_label(const ChartRow& row);
 
 // Marks, within each scene separately, the rows no other row beats in both milliseconds and

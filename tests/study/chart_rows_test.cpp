@@ -33,6 +33,9 @@ TEST(ChartRows, LabelsNameMethodAndSetting) {
   EXPECT_EQ(row_label(make_row("s", "proxy", 1, 1, 3, 1)), "proxy n3 k1 averaged");
   EXPECT_EQ(row_label(make_row("s", "path+guided", 1, 1, 0, 0, 16)), "path+guided 16 spp");
   EXPECT_EQ(row_label(make_row("s", "vertex", 1, 1, 4)), "vertex n4");
+  ChartRow supersampled = make_row("s", "proxy", 1, 1, 4, 4);
+  supersampled.antialiasing = "ssaa2";
+  EXPECT_EQ(row_label(supersampled), "proxy n4 k4 bilateral averaged ssaa2");
 }
 
 TEST(ChartRows, ParetoFrontIsPerSceneAndKeepsOnlyUndominatedRows) {
