@@ -1,6 +1,7 @@
 #version 460
 // Exponentiation and direct shading (frame step 5): O_p = exp*(f) by HYB (DC isolation, OL on
-// f̂/2^s, s squarings), then E_direct = O_p · LH(N) per colour from the LH cube maps (the
+// f̂/2^s, blended toward OL(f̂/2^(s+1))² near the next squaring count so O_p is continuous in f,
+// s squarings; sh/exponential.h), then E_direct = O_p · LH(N) per colour from the LH cube maps (the
 // ground-lit set for receivers above the ground, lighting_cube_set).
 // E is clamped to [0, E_unshadowed] per channel (ringing, notes F4).
 // Output per receiver: (E_r, E_g, E_b, (O_p)_0). CPU twin: render::exponentiate_and_shade.
@@ -96,6 +97,19 @@ void main() {
   float g[SH_COUNT];
   g[0] = ab.x * kSqrtFourPi;
   for (int i = 1; i < SH_COUNT; ++i) g[i] = ab.y * scale * f[i];
+  // Continuity (sh::hybrid_blend): toward OL(f̂/2^(s+1))², which the s squarings below turn into
+  // HYB with s + 1 at x = τ, what the norms above τ·2^s use.
+  float blend_t = clamp((norm * scale / tau - kHybridBlendStart) / (1.0 - kHybridBlendStart), 0.0, 1.0);
+  if (blend_t > 0.0) {
+    float blend = blend_t * blend_t * (3.0 - 2.0 * blend_t);
+    vec2 half_ab = optimal_linear_lookup(0.5 * norm * scale);
+    float h[SH_COUNT];
+    h[0] = half_ab.x * kSqrtFourPi;
+    for (int i = 1; i < SH_COUNT; ++i) h[i] = half_ab.y * 0.5 * scale * f[i];
+    float squared[SH_COUNT];
+    sh_square(h, squared);
+    for (int i = 0; i < SH_COUNT; ++i) g[i] += blend * (squared[i] - g[i]);
+  }
   for (int k = 0; k < squarings; ++k) {
     float squared[SH_COUNT];
     sh_square(g, squared);

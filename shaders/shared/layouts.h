@@ -61,6 +61,8 @@ PROXYGI_CONST(uint, kMaxShCoefficients, 36u);  // order 6
 // (m) above the ground plane y = 0; the ground itself keeps the environment's cubes.
 PROXYGI_CONST(uint, kGroundLitCubes, 3u);
 PROXYGI_CONST(float, kGroundBounceMinHeight, 0.001f);
+// HYB's blend toward the next squaring count starts at this fraction of τ (sh::kHybridBlendStart).
+PROXYGI_CONST(float, kHybridBlendStart, 0.75f);
 
 // One proxy sphere in world space, streamed every frame through the ring buffer.
 struct ProxySphere {

@@ -1,10 +1,13 @@
 #include "gpu/exponentiate_pass.h"
 
 #include "shaders/shared/layouts.h"
+#include "sh/exponential.h"
 
 namespace proxygi::gpu {
 
 using namespace gpu_layout;
+
+static_assert(kHybridBlendStart == sh::kHybridBlendStart, "HYB's blend start is defined in sh/exponential.h");
 
 Result<ExponentiatePass> ExponentiatePass::create(const Context& context, int order, settings::StaticTransfer level) {
   const bool static_transfer = level != settings::StaticTransfer::l0;

@@ -54,6 +54,11 @@ std::vector<double> log_exact(int order, std::span<const double> g, double epsil
   return std::vector<double>(result.data(), result.data() + count);
 }
 
+float hybrid_blend(float x, float tau) {
+  const float t = std::clamp((x / tau - kHybridBlendStart) / (1.0f - kHybridBlendStart), 0.0f, 1.0f);
+  return t * t * (3.0f - 2.0f * t);
+}
+
 glm::vec2 OptimalLinearTable::lookup(float norm) const {
   PROXYGI_CHECK(rows() >= 2, "empty OL table");
   const float position = std::clamp(norm / max_norm, 0.0f, 1.0f) * float(rows() - 1);
@@ -110,6 +115,15 @@ int exp_hybrid(const float* f, const OptimalLinearTable& table, float tau, float
   float g[kCount], squared[kCount];
   g[0] = ab.x * float(kSqrtFourPi);
   for (int i = 1; i < kCount; ++i) g[i] = ab.y * scale * f[i];
+  if (const float blend = hybrid_blend(norm * scale, tau); blend > 0.0f) {
+    // Toward OL(fhat / 2^(s+1))^{*2}: at x = tau the s squarings below give HYB with s + 1.
+    const glm::vec2 half_ab = table.lookup(0.5f * norm * scale);
+    float h[kCount];
+    h[0] = half_ab.x * float(kSqrtFourPi);
+    for (int i = 1; i < kCount; ++i) h[i] = half_ab.y * 0.5f * scale * f[i];
+    square<Order>(h, squared);
+    for (int i = 0; i < kCount; ++i) g[i] += blend * (squared[i] - g[i]);
+  }
   for (int k = 0; k < squarings; ++k) {
     square<Order>(g, squared);
     std::copy(squared, squared + kCount, g);

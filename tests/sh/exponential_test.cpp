@@ -1,6 +1,8 @@
 // SH exponential and log: identities, exp(log(g)) = g below the critical angle, and agreement
 // of the run-time approximations with the exact exponential where they should agree.
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <vector>
 
@@ -9,6 +11,7 @@
 #include "sh/basis.h"
 #include "sh/exponential.h"
 #include "sh/occlusion_tables.h"
+#include "sh/product.h"
 #include "sh/rotation.h"
 
 namespace proxygi::sh {
@@ -103,6 +106,59 @@ TEST(ShExponential, ApproximationsConvergeToTheExactExponential) {
     const int squarings = exp_hybrid(order, f_float, table, 0.01f, out);
     EXPECT_GE(squarings, 1);
     EXPECT_LT(relative_error(std::vector<double>(out.begin(), out.end()), exact), 2e-3);
+  }
+}
+
+// HYB is continuous where its squaring count changes (|f̂| = τ 2^s): the blend toward the next
+// count meets it there, where OL(f̂/2^s) then s squarings alone steps (the F7 jump).
+TEST(ShExponential, HybridIsContinuousWhereTheSquaringCountChanges) {
+  constexpr int kOrder = 4;
+  const OptimalLinearTable table = make_optimal_linear_table(kOrder);
+  const float tau = 0.25f;
+  std::vector<double> zonal_dir(16);
+  rotate_zonal(kOrder, log_occlusion_zonal(kOrder, std::sin(25.0 * kPi / 180)), glm::normalize(glm::dvec3(0.3, 0.5, 0.8)), zonal_dir);
+  double norm = 0.0;
+  for (int i = 1; i < 16; ++i) norm += zonal_dir[std::size_t(i)] * zonal_dir[std::size_t(i)];
+  norm = std::sqrt(norm);
+  // Unblended HYB with s squarings, as it was.
+  auto stepped = [&](const std::vector<float>& f, int s, float* out) {
+    std::vector<float> scaled(f);
+    for (int i = 1; i < 16; ++i) scaled[std::size_t(i)] = f[std::size_t(i)] / float(1 << s);
+    scaled[0] = 0.0f;
+    float g[16], squared[16];
+    exp_optimal_linear<kOrder>(scaled.data(), table, g);
+    for (int k = 0; k < s; ++k) {
+      square<kOrder>(g, squared);
+      std::copy(squared, squared + 16, g);
+    }
+    std::copy(g, g + 16, out);
+  };
+  // Across the switch (|f̂| from τ 2^s (1 − ε) to τ 2^s (1 + ε)) the result may change by what
+  // the same 2ε changes it within one count (|f̂| from τ 2^s (1 − 3ε) to τ 2^s (1 − ε)), not more.
+  const double epsilon = 1e-4;
+  for (int s = 0; s <= 4; ++s) {
+    auto at = [&](double factor) {
+      std::vector<float> f(16);
+      for (int i = 1; i < 16; ++i) f[std::size_t(i)] = float(zonal_dir[std::size_t(i)] * tau * double(1 << s) / norm * factor);
+      return f;
+    };
+    const std::vector<float> further = at(1.0 - 3.0 * epsilon), below = at(1.0 - epsilon), above = at(1.0 + epsilon);
+    float far_out[16], lo[16], hi[16], lo_stepped[16], hi_stepped[16];
+    EXPECT_EQ(exp_hybrid<kOrder>(further.data(), table, tau, far_out), s);
+    EXPECT_EQ(exp_hybrid<kOrder>(below.data(), table, tau, lo), s);
+    EXPECT_EQ(exp_hybrid<kOrder>(above.data(), table, tau, hi), s + 1);
+    stepped(below, s, lo_stepped);
+    stepped(above, s + 1, hi_stepped);
+    double slope = 0.0, jump = 0.0, jump_stepped = 0.0;
+    for (int i = 0; i < 16; ++i) {
+      slope = std::max(slope, double(std::abs(lo[i] - far_out[i])));
+      jump = std::max(jump, double(std::abs(hi[i] - lo[i])));
+      jump_stepped = std::max(jump_stepped, double(std::abs(hi_stepped[i] - lo_stepped[i])));
+    }
+    EXPECT_LE(jump, 1.5 * slope + 1e-6) << "s = " << s;
+    EXPECT_GT(jump_stepped, 10.0 * slope) << "s = " << s << ": unblended, HYB must step here for this test to mean anything";
+    std::printf("s = %d: change across the switch %.2e, over as far within one count %.2e (unblended: %.2e)\n", s, jump,
+                slope, jump_stepped);
   }
 }
 

@@ -83,10 +83,10 @@ Shade shade(const render::FrameTables& tables, std::span<const render::Sphere> s
   }
   return out;
 }
-// The largest change between two frames, in u = 1/255 of the unshadowed irradiance, over the
-// receivers whose HYB squaring count stayed the same: where it changes, the exponential itself
-// jumps (F7, stability sweep S3), as it does under any continuous change of the log sum; those
-// steps are counted in `switch_steps` and their largest in `switch_worst`.
+// The largest change between two frames, in u = 1/255 of the unshadowed irradiance, over all
+// receivers; those whose HYB squaring count changed are also counted in `switch_steps` and their
+// largest step in `switch_worst` (before HYB blended toward the next count, the exponential
+// jumped there by up to 1.8 u: F7, stability sweep S3).
 struct Steps {
   double worst = 0.0, switch_worst = 0.0;
   int switch_steps = 0;
@@ -95,9 +95,8 @@ void add_steps(const Shade& a, const Shade& b, const Shade& open, Steps& steps) 
   for (std::size_t i = 0; i < a.irradiance.size(); ++i)
     for (int c = 0; c < 3; ++c) {
       const double step = std::abs(double(a.irradiance[i][c]) - b.irradiance[i][c]) / (open.irradiance[i][c] / 255.0);
-      if (a.squarings[i] == b.squarings[i]) {
-        steps.worst = std::max(steps.worst, step);
-      } else {
+      steps.worst = std::max(steps.worst, step);
+      if (a.squarings[i] != b.squarings[i]) {
         steps.switch_worst = std::max(steps.switch_worst, step);
         steps.switch_steps += c == 0;
       }
