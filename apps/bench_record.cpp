@@ -56,6 +56,7 @@ Result<double> time_record_path(gpu::SceneRenderer& renderer, const std::vector<
                                 const std::filesystem::path& dir, std::size_t& bytes) {
   run::FrameLoopOptions options;
   options.output = gpu::FrameOutput::readback(false);  // no EXR: no HDR readback, as record
+  options.output.float_targets = false;
   const std::size_t encoders = run::default_encoder_threads();
   const int width = int(renderer.config().width), height = int(renderer.config().height);
   std::vector<std::size_t> sizes(frames.size(), 0);

@@ -74,6 +74,7 @@ Status render_in_flight(gpu::SceneRenderer& renderer, const RecordPlan& plan, Re
   const scene::Output& output = renderer.scene().output;
   run::FrameLoopOptions options;
   options.output = gpu::FrameOutput::readback(plan.exr);
+  options.output.float_targets = false;  // no AOVs here: the composite writes only what is copied
   options.stop = &g_interrupted;
   const std::size_t encoders = run::default_encoder_threads();
   run::TaskQueue writer(encoders, 2 * encoders);  // a few frames queued at most: bounded memory

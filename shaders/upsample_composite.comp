@@ -15,6 +15,10 @@
 // visibility DC, or the shadow pass's per-tile list lengths as a heat map. They are compiled only
 // into the DEBUG_VIEWS variant ("upsample_composite.comp:views"): lavapipe runs both sides of
 // every branch under a lane mask, so the final frame's pipeline leaves the views' reads out.
+// Outputs: the sRGB frame always; NO_IRRADIANCE_AOV leaves out the irradiance AOV and NO_HDR the
+// linear radiance (":no_aov", ":ldr_only", for frames whose caller reads neither, FrameOutput::
+// float_targets): on lavapipe each vec4 store is a loop over the lanes per component, and the two
+// vec4 stores took about 40 % of this pass.
 // CPU twins: render::upsample, render::tonemap and image::linear_to_srgb.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
@@ -216,7 +220,9 @@ void main() {
     vec3 direction = normalize(far_point.xyz / far_point.w - frame.eye_position.xyz);
     radiance = environment_radiance(direction);
   }
+#ifndef NO_IRRADIANCE_AOV
   irradiance[index] = aov;
+#endif
   vec3 display = tonemap(radiance);
 #ifdef DEBUG_VIEWS
   if (view != kDebugViewFinal && position_depth.w > 0.0 && view <= kDebugViewReceivers) {  // the frame's inputs
@@ -240,7 +246,9 @@ void main() {
     radiance = vec3(float(count));
   }
 #endif
+#ifndef NO_HDR
   hdr[index] = vec4(radiance, 1.0);
+#endif
   uvec3 encoded = uvec3(clamp(vec3(linear_to_srgb(display.r), linear_to_srgb(display.g), linear_to_srgb(display.b)), 0.0, 1.0) * 255.0 + 0.5);
   // In the caller's channel order (an image output of B8G8R8A8: one raw copy lands it).
   if (push.ldr_swap_red_blue != 0u) encoded = encoded.bgr;

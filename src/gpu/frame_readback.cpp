@@ -18,8 +18,16 @@ Result<image::ImageF> SoftGiFrame::read_vec4_buffer(const Buffer& buffer, std::u
 }
 
 Result<std::vector<std::uint8_t>> SoftGiFrame::read_ldr() const { return readback(context_, targets_.ldr); }
-Result<image::ImageF> SoftGiFrame::read_hdr() const { return read_vec4_buffer(targets_.hdr, config_.width, config_.height); }
+Result<image::ImageF> SoftGiFrame::read_hdr() const {
+  if (!hdr_written_)
+    return make_error("read_hdr: the last frame was recorded without its HDR (FrameOutput::float_targets off, "
+                      "no HDR readback)");
+  return read_vec4_buffer(targets_.hdr, config_.width, config_.height);
+}
 Result<image::ImageF> SoftGiFrame::read_irradiance() const {
+  if (!irradiance_written_)
+    return make_error("read_irradiance: the last frame was recorded without the irradiance AOV "
+                      "(FrameOutput::float_targets off)");
   return read_vec4_buffer(targets_.irradiance, config_.shading_width(), config_.shading_height());
 }
 Result<image::ImageF> SoftGiFrame::read_direct() const {

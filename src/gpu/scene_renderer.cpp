@@ -387,6 +387,9 @@ Result<PassTimings> SceneRenderer::time_passes(int frame, PassClock clock) {
     return std::chrono::duration<double, std::milli>(end_time - begin_time).count();
   };
   const auto passes = frame_pass_order(frame_->settings().method);
+  // The outputs of run::time_pipelined_frames' frames (HDR read back, no AOV): the same composite.
+  FrameOutput output = FrameOutput::readback(true);
+  output.float_targets = false;
   if (clock == PassClock::timestamps_if_valid) {
     // One submit: a timestamp before skinning and after it and each pass.
     auto queries = TimestampQueries::create(context_, std::uint32_t(passes.size()) + 2);
@@ -401,7 +404,7 @@ Result<PassTimings> SceneRenderer::time_passes(int frame, PassClock clock) {
         PassBarriers barriers;
         memory_barrier(commands);  // skinning wrote what the G-buffer reads
         for (std::size_t p = 0; p < passes.size(); ++p) {
-          frame_->record_pass(commands, 0, passes[p], *draws, barriers);
+          frame_->record_pass(commands, 0, passes[p], *draws, barriers, output);
           queries->write(commands, std::uint32_t(p) + 2);
         }
       });
@@ -430,7 +433,7 @@ Result<PassTimings> SceneRenderer::time_passes(int frame, PassClock clock) {
     auto ms = timed([&](VkCommandBuffer commands) {
       memory_barrier(commands);  // the previous pass's submission wrote what this one reads
       PassBarriers barriers;
-      frame_->record_pass(commands, 0, pass, *draws, barriers);
+      frame_->record_pass(commands, 0, pass, *draws, barriers, output);
     });
     if (!ms) return ms.error();
     timings.milliseconds[std::size_t(pass)] = *ms;

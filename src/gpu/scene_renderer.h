@@ -157,7 +157,8 @@ class SceneRenderer {
   Result<FinishedFrame> finish_frame(int frame);  // the oldest begun frame with that number
   Result<FinishedFrame> render(int frame);
   // Prepares frame `frame` and times each of its passes (PassClock). Needs every begun frame
-  // finished. The frame's pixels are not copied out.
+  // finished. The frame's pixels are not copied out; its composite writes what
+  // run::time_pipelined_frames' frames keep (the HDR, no irradiance AOV: FrameOutput::float_targets).
   Result<PassTimings> time_passes(int frame, PassClock clock = PassClock::fenced_cpu);
 
   // The skinned world-space positions of the last finished frame, per instance and primitive in

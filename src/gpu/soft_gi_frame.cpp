@@ -167,7 +167,8 @@ Status SoftGiFrame::write_slot(std::uint32_t slot, const FrameView& view, std::s
 }
 
 void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot_index, FramePass pass,
-                              std::span<const DrawItem> draws, PassBarriers& barriers) const {
+                              std::span<const DrawItem> draws, PassBarriers& barriers,
+                              const FrameOutput& output) const {
   const Slot& slot = slots_[slot_index];
   const Targets& t = targets_;
   const std::uint32_t rw = config_.receiver_width(), rh = config_.receiver_height();
@@ -237,12 +238,17 @@ void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot_index
     case FramePass::upsample_composite: {
       // Supersampled: the composite writes the samples in RGBA order, the resolve the display frame.
       const bool supersampled = passes_.supersample_resolve.has_value();
+      // The views' pipeline writes every output; otherwise only what the caller reads.
+      const bool aov = output.float_targets || slot.debug_view;
+      const bool hdr = aov || output.readback_hdr || supersampled;
+      irradiance_written_ = aov;
+      hdr_written_ = hdr;
       run(*passes_.upsample_composite,
           UpsampleCompositePass::Inputs{&slot.constants, &t.position_depth, &t.normal, &t.albedo, &t.receivers,
                                         &t.shaded, &t.direct, &t.indirect, &t.tile_counts, &environment_,
                                         environment_width_, environment_height_,
                                         config_.shading_width(), config_.shading_height(), ldr_bgra_ && !supersampled,
-                                        slot.debug_view},
+                                        slot.debug_view, aov, hdr},
           UpsampleCompositePass::Outputs{&t.irradiance, supersampled ? &t.sample_hdr : &t.hdr,
                                          supersampled ? &t.sample_ldr : &t.ldr});
       break;
@@ -264,7 +270,7 @@ void SoftGiFrame::record(VkCommandBuffer commands, std::uint32_t slot, std::span
                          const FrameOutput& output) const {
   memory_barrier(commands);  // the previous frame on the queue may still read these targets
   PassBarriers barriers;
-  for (FramePass pass : frame_pass_order(config_.render.method)) record_pass(commands, slot, pass, draws, barriers);
+  for (FramePass pass : frame_pass_order(config_.render.method)) record_pass(commands, slot, pass, draws, barriers, output);
   const ResourceAccess copied[] = {reads(&targets_.ldr, VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_BLIT_BIT),
                                    reads(&targets_.hdr, VK_PIPELINE_STAGE_2_COPY_BIT)};
   barriers.before(commands, copied);

@@ -80,8 +80,9 @@ class SoftGiFrame {
   // passes recorded before it in the same command buffer (`barriers`); the passes in
   // frame_pass_order equal record() without the output. The benchmark submits them one by one to
   // time each with the CPU clock (lavapipe's timestamps are unreliable, rendering-notes §4.2).
+  // `output` decides which float targets upsample_composite writes (FrameOutput::float_targets).
   void record_pass(VkCommandBuffer commands, std::uint32_t slot, FramePass pass, std::span<const DrawItem> draws,
-                   PassBarriers& barriers) const;
+                   PassBarriers& barriers, const FrameOutput& output = FrameOutput::readback()) const;
 
   const FrameConfig& config() const { return config_; }
   float shadow_eta() const { return tables_.shadow_eta; }  // in use (resolved when the setting is auto)
@@ -99,6 +100,8 @@ class SoftGiFrame {
   // method, receiver i is vertex i of the draws in order (groups of 64 per draw, the rest empty),
   // and the G-buffer's normal target holds the interpolated vertex irradiance instead.
   Result<std::vector<std::uint8_t>> read_ldr() const;   // RGBA8 sRGB, width × height
+  // read_hdr and read_irradiance fail when the last frame was recorded without them
+  // (FrameOutput::float_targets false; the HDR is kept when read back).
   Result<image::ImageF> read_hdr() const;                // linear radiance, display res
   Result<image::ImageF> read_irradiance() const;         // shading res, upsampled E
   Result<image::ImageF> read_direct() const;             // receiver res: rgb E_direct, a (O_p)_0
@@ -192,6 +195,8 @@ class SoftGiFrame {
   // image's format, the frame's size) and a linear blit.
   bool ldr_bgra_ = false;
   Image output_staging_;
+  // What the last recorded upsample_composite wrote (read_hdr, read_irradiance check it).
+  mutable bool hdr_written_ = true, irradiance_written_ = true;
 };
 
 }  // namespace proxygi::gpu

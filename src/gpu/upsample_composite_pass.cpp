@@ -22,10 +22,16 @@ Result<UpsampleCompositePass> UpsampleCompositePass::create(const Context& conte
                                      {kCompositeBindTileCounts, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
   auto pipeline = make_compute_pipeline(context, "upsample_composite.comp", bindings, sizeof(CompositePush));
   if (!pipeline) return pipeline.error();
+  auto no_aov = make_compute_pipeline(context, "upsample_composite.comp:no_aov", bindings, sizeof(CompositePush));
+  if (!no_aov) return no_aov.error();
+  auto ldr_only = make_compute_pipeline(context, "upsample_composite.comp:ldr_only", bindings, sizeof(CompositePush));
+  if (!ldr_only) return ldr_only.error();
   auto views = make_compute_pipeline(context, "upsample_composite.comp:views", bindings, sizeof(CompositePush));
   if (!views) return views.error();
   UpsampleCompositePass pass;
   pass.pipeline_ = std::move(*pipeline);
+  pass.no_aov_pipeline_ = std::move(*no_aov);
+  pass.ldr_only_pipeline_ = std::move(*ldr_only);
   pass.views_pipeline_ = std::move(*views);
   return pass;
 }
@@ -39,7 +45,10 @@ std::vector<ResourceAccess> UpsampleCompositePass::accesses(const Inputs& in, co
 
 void UpsampleCompositePass::record(const Context& context, VkCommandBuffer commands, const Inputs& in,
                                    const Outputs& out) const {
-  const Pipeline& pipeline = in.debug_view ? views_pipeline_ : pipeline_;
+  const Pipeline& pipeline = in.debug_view                   ? views_pipeline_
+                             : in.irradiance_aov               ? pipeline_
+                             : in.hdr                          ? no_aov_pipeline_
+                                                               : ldr_only_pipeline_;
   pipeline.bind(commands);
   DescriptorPush()
       .uniform_buffer(kCompositeBindFrame, *in.constants)

@@ -3,7 +3,8 @@
 // irradiance from the 2×2 surrounding receivers (joint-bilateral eq. 11 or bilinear; the vertex
 // method's G-buffer already holds it), radiance = albedo/π · E on covered pixels and the
 // environment elsewhere, HDR and tonemapped sRGB out; or one of the viewer's views (layouts.h
-// kDebugView*). CPU twins: render::upsample, render::tonemap.
+// kDebugView*). Outputs the caller does not read (Inputs::irradiance_aov, hdr) are not written.
+// CPU twins: render::upsample, render::tonemap.
 #include "base/result.h"
 #include "gpu/frame_passes.h"
 #include "gpu/pass_barriers.h"
@@ -28,6 +29,8 @@ class UpsampleCompositePass {
     std::uint32_t width = 0, height = 0;    // display
     bool ldr_bgra = false;                  // the 8-bit frame in B8G8R8A8 byte order
     bool debug_view = false;                // frame.debug_view is not kDebugViewFinal: the views' pipeline
+    bool irradiance_aov = true;             // write Outputs::irradiance (false: ":no_aov")
+    bool hdr = true;                        // write Outputs::hdr (false, with no AOV: ":ldr_only")
   };
   struct Outputs {
     const Buffer* irradiance = nullptr;  // vec4 per display pixel (AOV)
@@ -41,8 +44,10 @@ class UpsampleCompositePass {
   void record(const Context& context, VkCommandBuffer commands, const Inputs& in, const Outputs& out) const;
 
  private:
-  Pipeline pipeline_;        // the final frame only
-  Pipeline views_pipeline_;  // with the viewer's views ("upsample_composite.comp:views")
+  Pipeline pipeline_;           // the final frame only, every output
+  Pipeline no_aov_pipeline_;    // without the irradiance AOV
+  Pipeline ldr_only_pipeline_;  // the sRGB frame alone
+  Pipeline views_pipeline_;     // with the viewer's views ("upsample_composite.comp:views"), every output
 };
 
 }  // namespace proxygi::gpu

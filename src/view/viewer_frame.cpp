@@ -145,6 +145,7 @@ Status Viewer::render_into(const TargetImage& target) {
   request.debug_view = std::uint32_t(core_->state().view);
   request.output = gpu::FrameOutput::into({target.image, target.format, target.width, target.height,
                                            VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
+  request.output.float_targets = false;  // the viewer shows the 8-bit frame only
   // Frames in flight: the next frame is prepared on the CPU while the device still renders the
   // previous one; only when every ring slot is busy does the loop wait for the oldest.
   while (in_flight_.size() >= kFramesInFlight)
