@@ -45,6 +45,11 @@ std::vector<MethodSetting> method_grid(bool quick) {
   // What the lit ground adds: the default setting with render.ground_bounce off.
   grid.push_back({settings::ShadingMethod::image_space, defaults.sh_order, defaults.receiver_scale, defaults.upsampling,
                   defaults.indirect_operator, settings::IndirectMethod::proxy, 1, false});
+  // Static receivers' PRT and static geometry shadowing the characters (l0 is the default row).
+  for (settings::StaticTransfer level : {settings::StaticTransfer::ratio, settings::StaticTransfer::l1})
+    grid.push_back({settings::ShadingMethod::image_space, defaults.sh_order, defaults.receiver_scale, defaults.upsampling,
+                    defaults.indirect_operator, settings::IndirectMethod::proxy, 1, true,
+                    settings::VsglGrouping::vertex_ranges, level});
   for (int order : orders)
     grid.push_back({settings::ShadingMethod::vertex, order, 1, settings::Upsampling::bilateral, defaults.indirect_operator});
   for (int scale : scales)
@@ -57,7 +62,7 @@ bool bounce_row_setting(const MethodSetting& setting) {
   const settings::RenderSettings defaults;
   return setting.method == settings::ShadingMethod::image_space && setting.sh_order == defaults.sh_order &&
          setting.receiver_scale == defaults.receiver_scale && setting.upsampling == defaults.upsampling &&
-         setting.ground_bounce;
+         setting.ground_bounce && setting.static_transfer == settings::StaticTransfer::l0;
 }
 
 study::ChartRow describe_setting(const MethodSetting& setting, const std::string& scene) {
@@ -65,6 +70,7 @@ study::ChartRow describe_setting(const MethodSetting& setting, const std::string
   study::ChartRow row;
   row.scene = scene;
   row.ground_bounce = setting.ground_bounce;
+  row.static_transfer = std::string(settings::name_of(setting.static_transfer));
   switch (setting.method) {
     case settings::ShadingMethod::image_space:
       row.method = "proxy";
@@ -82,7 +88,8 @@ study::ChartRow describe_setting(const MethodSetting& setting, const std::string
       }
       row.is_default = setting.sh_order == defaults.sh_order && setting.receiver_scale == defaults.receiver_scale &&
                        setting.upsampling == defaults.upsampling && setting.indirect == defaults.indirect_operator &&
-                       setting.indirect_method == defaults.indirect_method && setting.ground_bounce == defaults.ground_bounce;
+                       setting.indirect_method == defaults.indirect_method && setting.ground_bounce == defaults.ground_bounce &&
+                       setting.static_transfer == defaults.static_transfer;
       break;
     case settings::ShadingMethod::vertex:
       row.method = "vertex";
@@ -116,6 +123,7 @@ Status run_raster_methods(gpu::Context& context, const study::ChartScene& chart,
     render.indirect_method = setting.indirect_method;
     render.vsgl_lights = setting.vsgl_lights;
     render.vsgl_grouping = setting.vsgl_grouping;
+    render.static_transfer = setting.static_transfer;
     grid_settings.push_back(render);
   }
   auto renderer = gpu::SceneRenderer::create(context, std::shared_ptr<const world::World>(std::move(*world)),

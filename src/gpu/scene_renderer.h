@@ -51,6 +51,13 @@ struct StaticTransferReport {
   std::size_t vertices = 0, triangles = 0;
   std::size_t cpu_bytes = 0;     // the field (prt::StaticTransferField::bytes)
   std::size_t gpu_bytes = 0;     // its buffers on the GPU (SoftGiFrame::static_transfer_bytes)
+  // The static meshes' visibility grid shading the other receivers (prt/visibility_grid.h).
+  bool grid_from_cache = false;
+  std::filesystem::path grid_file;
+  double grid_seconds = 0.0;     // its compute or cache read (included in load_seconds)
+  std::uint64_t grid_rays = 0;   // traced (0 from the cache)
+  std::size_t grid_points = 0;
+  std::size_t grid_bytes = 0;    // CPU (= GPU) memory of its values
 };
 // One line for summaries: "PRT (render.static_transfer l1): read prt-cache/prt-….bin, 21772 vertices, ...".
 std::string describe(const StaticTransferReport& report);
@@ -152,6 +159,7 @@ class SceneRenderer {
   // The PRT field in use (null when none) and its records for the current lighting (twin tests).
   const prt::StaticTransferField* static_field() const { return static_field_.get(); }
   std::span<const float> static_records() const { return static_records_; }
+  const prt::VisibilityGrid* static_visibility() const { return static_visibility_.get(); }
 
  private:
   struct ModelTextures;
@@ -182,6 +190,7 @@ class SceneRenderer {
   world::WorldState state_;  // scratch: the state evaluated for the frame being prepared
   prt::StaticFieldOptions static_options_;
   std::shared_ptr<const prt::StaticTransferField> static_field_;  // loaded once per SH order
+  std::shared_ptr<const prt::VisibilityGrid> static_visibility_;   // with it
   std::vector<float> static_records_;
   StaticTransferReport static_report_;
   std::unique_ptr<world::ProxyLod> proxy_lod_;  // render.proxy_lod auto: built on first use

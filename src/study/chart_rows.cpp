@@ -76,6 +76,7 @@ std::string row_label(const ChartRow& row) {
   if (!row.upsampling.empty()) text << ' ' << row.upsampling;
   if (!row.indirect.empty()) text << ' ' << row.indirect;
   if (!row.ground_bounce) text << " no-ground-bounce";
+  if (row.static_transfer != "l0") text << " static-" << row.static_transfer;
   return text.str();
 }
 
@@ -328,6 +329,7 @@ std::string to_json(const std::vector<ChartRow>& rows) {
                    {"character_relative_mse", row.character_relative_mse},
                    {"character_luminance_ratio", row.character_luminance_ratio},
                    {"ground_bounce", row.ground_bounce},
+                   {"static_transfer", row.static_transfer},
                    {"pareto", row.pareto},
                    {"default", row.is_default}});
     if (row.regions.measured) out.back()["regions"] = regions;
