@@ -274,8 +274,11 @@ std::string to_region_markdown(const std::vector<ChartRow>& rows, const std::str
     return a->milliseconds < b->milliseconds;
   });
   std::ostringstream text;
-  text << "| method | all | shadow | edge | thin | character | contact | negative px | above unshadowed px | NaN/Inf px |\n";
-  text << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  text << "| method | all";
+  for (const char* name : kChartRegionNames) text << " | " << name;
+  text << " | negative px | above unshadowed px | NaN/Inf px |\n|---|---:";
+  for (int r = 0; r < kChartRegionCount + 3; ++r) text << "|---:";
+  text << "|\n";
   char cell[64];
   for (const ChartRow* row : selected) {
     std::string label = row_label(*row);

@@ -121,7 +121,8 @@ TEST_F(StaticTransferTest, StaticReceiversMatchTheCpuTwinAtEveryLevel) {
                 counts.in_grid, counts.others, counts.static_sum / counts.l0_sum, counts.grid_sum / counts.grid_l0_sum);
     EXPECT_GE(counts.static_receivers, 500) << "the walls, steps and floor patch fill most of the 32² receivers";
     EXPECT_GE(counts.shadowed_static, 50) << "the mannequin must shadow some static receivers";
-    EXPECT_GE(counts.in_grid, 100) << "the mannequin's receivers";
+    EXPECT_GE(counts.in_grid, 10) << "the mannequin's receivers (13 of the 32² at frame 60)";
+    EXPECT_GE(counts.others, 50) << "the ground beyond the patch (and the grid)";
     // The walls hide part of the mannequin's sky (README: +17–27 % too bright without the grid).
     EXPECT_LT(counts.grid_sum, 0.97 * counts.grid_l0_sum) << settings::name_of(level) << ": no static shadowing";
     // The walls hide much of the sky from the floor and each other (README: l0 is 175 % too bright).
