@@ -209,7 +209,9 @@ Status write_chart_report(const std::string& folder, const std::vector<study::Ch
              << "Relative MSE over each region of the reference (study/chart_regions.h): shadow (ground and other "
                 "non-character receivers whose reference direct light is > 5 % below unshadowed), edge (2 px around "
                 "depth or normal jumps), thin (character parts narrower than 4 px), character (the body as receiver), "
-                "contact (ground within 0.3 m of a character); n/a = empty region. Bounds: pixels per frame with a "
+                "contact (ground within 0.3 m of a character), near_wall and open_floor (ground within 0.5 m of a "
+                "static mesh, farther than 1 m from all; scenes with static meshes); n/a = empty region. Bounds: "
+                "pixels per frame with a "
                 "channel < 0, above unshadowed + the reference's bounce by > 1/255, or NaN/Inf.\n";
     std::vector<std::string> scenes;
     if (goal_scene(rows) == study::kAllScenes) scenes.push_back(study::kAllScenes);

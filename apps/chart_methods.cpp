@@ -50,6 +50,11 @@ std::vector<MethodSetting> method_grid(bool quick) {
     grid.push_back({settings::ShadingMethod::image_space, defaults.sh_order, defaults.receiver_scale, defaults.upsampling,
                     defaults.indirect_operator, defaults.indirect_method, defaults.vsgl_lights, defaults.ground_bounce,
                     defaults.vsgl_grouping, antialiasing});
+  // Static receivers' PRT and static geometry shadowing the characters (l0 is the default row).
+  for (settings::StaticTransfer level : {settings::StaticTransfer::ratio, settings::StaticTransfer::l1})
+    grid.push_back({settings::ShadingMethod::image_space, defaults.sh_order, defaults.receiver_scale, defaults.upsampling,
+                    defaults.indirect_operator, settings::IndirectMethod::proxy, 1, true,
+                    settings::VsglGrouping::vertex_ranges, settings::Antialiasing::off, level});
   for (int order : orders)
     grid.push_back({settings::ShadingMethod::vertex, order, 1, settings::Upsampling::bilateral, defaults.indirect_operator});
   for (int scale : scales)
@@ -62,7 +67,8 @@ bool bounce_row_setting(const MethodSetting& setting) {
   const settings::RenderSettings defaults;
   return setting.method == settings::ShadingMethod::image_space && setting.sh_order == defaults.sh_order &&
          setting.receiver_scale == defaults.receiver_scale && setting.upsampling == defaults.upsampling &&
-         setting.ground_bounce && setting.antialiasing == defaults.antialiasing;
+         setting.ground_bounce && setting.antialiasing == defaults.antialiasing &&
+         setting.static_transfer == settings::StaticTransfer::l0;
 }
 
 study::ChartRow describe_setting(const MethodSetting& setting, const std::string& scene) {
@@ -71,6 +77,7 @@ study::ChartRow describe_setting(const MethodSetting& setting, const std::string
   row.scene = scene;
   row.ground_bounce = setting.ground_bounce;
   if (setting.antialiasing != settings::Antialiasing::off) row.antialiasing = std::string(settings::name_of(setting.antialiasing));
+  row.static_transfer = std::string(settings::name_of(setting.static_transfer));
   switch (setting.method) {
     case settings::ShadingMethod::image_space:
       row.method = "proxy";
@@ -89,7 +96,7 @@ study::ChartRow describe_setting(const MethodSetting& setting, const std::string
       row.is_default = setting.sh_order == defaults.sh_order && setting.receiver_scale == defaults.receiver_scale &&
                        setting.upsampling == defaults.upsampling && setting.indirect == defaults.indirect_operator &&
                        setting.indirect_method == defaults.indirect_method && setting.ground_bounce == defaults.ground_bounce &&
-                       setting.antialiasing == defaults.antialiasing;
+                       setting.antialiasing == defaults.antialiasing && setting.static_transfer == defaults.static_transfer;
       break;
     case settings::ShadingMethod::vertex:
       row.method = "vertex";
@@ -124,6 +131,7 @@ Status run_raster_methods(gpu::Context& context, const study::ChartScene& chart,
     render.vsgl_lights = setting.vsgl_lights;
     render.vsgl_grouping = setting.vsgl_grouping;
     render.antialiasing = setting.antialiasing;
+    render.static_transfer = setting.static_transfer;
     grid_settings.push_back(render);
   }
   auto renderer = gpu::SceneRenderer::create(context, std::shared_ptr<const world::World>(std::move(*world)),

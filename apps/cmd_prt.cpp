@@ -1,5 +1,5 @@
 // proxygi prt SCENE [--cache DIR] [--spacing M] [--directions K] [--bounces B] [--order N]
-//                   [--threads T] [--json] [--quiet]
+//                   [--grid-spacing M] [--threads T] [--json] [--quiet]
 // Precomputes the PRT transfer (T_DS, T_DI) of the scene's static meshes and the ground patch
 // around them (src/prt), or reads it from the cache: next to the scene file in prt-cache/, or
 // the user cache ($XDG_CACHE_HOME/proxygi/prt) when that folder is not writable or the scene is
@@ -28,6 +28,7 @@ struct PrtArgs {
   std::string cache;
   float spacing_m = 0.1f;
   float ground_margin_m = 2.0f;
+  float grid_spacing_m = prt::VisibilityGridSettings{}.spacing_m;
   prt::TransferSettings transfer;
   int order = 0;  // 0: the scene's render.sh_order
   int threads = 0;
@@ -78,6 +79,14 @@ int run_prt(PrtArgs& args) {
   auto result = prt::load_or_compute_transfer(*receivers, args.transfer, dir, progress, args.threads);
   if (!result) return fail_bad_input(result.message());
   const prt::TransferSet& t = result->transfer;
+  // The static meshes' visibility grid the frame shades characters with (as load_static_field).
+  prt::VisibilityGridSettings grid_settings;
+  grid_settings.spacing_m = args.grid_spacing_m;
+  grid_settings.margin_m = args.ground_margin_m;
+  grid_settings.directions = args.transfer.directions;
+  auto grid = prt::load_or_compute_visibility_grid(*receivers, t.order, grid_settings, dir, args.threads);
+  if (!grid) return fail_bad_input(grid.message());
+  const prt::VisibilityGrid& g = grid->grid;
   if (args.json) {
     nlohmann::json out = {{"surfaces", receivers->surfaces.size()},
                           {"vertices", vertices},
@@ -90,6 +99,11 @@ int run_prt(PrtArgs& args) {
                           {"cache_file", result->file.string()},
                           {"bytes", t.bytes()}};
     if (!result->from_cache) out.update({{"rays", t.rays}, {"seconds", t.seconds}});
+    nlohmann::json grid_json = {{"spacing_m", g.spacing}, {"points", g.points()}, {"size", {g.size.x, g.size.y, g.size.z}},
+                                {"from_cache", grid->from_cache}, {"cache_file", grid->file.string()},
+                                {"bytes", g.bytes()}};
+    if (!grid->from_cache) grid_json.update({{"rays", g.rays}, {"seconds", g.seconds}});
+    out["visibility_grid"] = grid_json;
     std::printf("%s\n", out.dump(2).c_str());
   } else if (!quiet()) {
     std::printf(
@@ -101,6 +115,12 @@ int run_prt(PrtArgs& args) {
     else
       std::printf("computed %.1f Mrays in %.2f s (%.2f Mrays/s), %.2f MiB, wrote %s\n", double(t.rays) / 1e6, t.seconds,
                   double(t.rays) / 1e6 / t.seconds, double(t.bytes()) / 1048576.0, result->file.c_str());
+    std::printf("visibility grid: %u×%u×%u points (spacing %.3g m), ", g.size.x, g.size.y, g.size.z, double(g.spacing));
+    if (grid->from_cache)
+      std::printf("read %s (%.2f MiB)\n", grid->file.c_str(), double(g.bytes()) / 1048576.0);
+    else
+      std::printf("computed %.1f Mrays in %.2f s, %.2f MiB, wrote %s\n", double(g.rays) / 1e6, g.seconds,
+                  double(g.bytes()) / 1048576.0, grid->file.c_str());
   }
   return kExitOk;
 }
@@ -119,7 +139,11 @@ void add_prt_command(CLI::App& app, CommandRunner& runner) {
       ->add_option("--ground-margin", args->ground_margin_m,
                    "Ground patch margin around the static meshes, m (default 2)")
       ->check(CLI::Range(0.0f, 100.0f));
-  command->add_option("--directions", args->transfer.directions, "Directions per vertex and pass (default 1024)")
+  command->add_option("--grid-spacing", args->grid_spacing_m,
+                      "Spacing of the static meshes' visibility grid that shadows characters, m (default 0.2)")
+      ->check(CLI::Range(0.02f, 10.0f));
+  command->add_option("--directions", args->transfer.directions,
+                      "Directions per vertex and pass, and per visibility grid point (default 1024)")
       ->check(CLI::Range(prt::kMinDirections, prt::kMaxDirections));
   command->add_option("--bounces", args->transfer.bounces, "Interreflection passes (default 2)")
       ->check(CLI::Range(0, prt::kMaxBounces));

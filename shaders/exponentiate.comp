@@ -6,7 +6,9 @@
 // E is clamped to [0, E_unshadowed] per channel (ringing, notes F4).
 // Output per receiver: (E_r, E_g, E_b, (O_p)_0). CPU twin: render::exponentiate_and_shade.
 // STATIC_TRANSFER 1 (ratio) or 2 (l1), render.static_transfer: receivers on a PRT triangle take
-// the static-transfer E of static_transfer.glsl instead (CPU twin: prt::static_receiver_direct).
+// the static-transfer E of static_transfer.glsl instead (CPU twin: prt::static_receiver_direct),
+// other receivers in the static meshes' visibility grid (O_p ∗ V_s) · LH(N) (static geometry
+// shadowing the characters; CPU twin: prt::character_receiver_direct).
 #extension GL_GOOGLE_include_directive : require
 #include "frame_common.glsl"
 #include "sh/sh_product.glsl"
@@ -31,6 +33,7 @@ layout(std430, set = 0, binding = kExponentiateBindStaticPositions) readonly buf
 layout(std430, set = 0, binding = kExponentiateBindStaticTriangles) readonly buffer StaticTriangles { StaticTriangle static_triangles[]; };
 layout(std430, set = 0, binding = kExponentiateBindStaticGrid) readonly buffer StaticGrid { uint static_grid[]; };
 layout(std430, set = 0, binding = kExponentiateBindStaticRecords) readonly buffer StaticRecords { float static_records[]; };
+layout(std430, set = 0, binding = kExponentiateBindStaticVisibility) readonly buffer StaticVisibility { float static_visibility[]; };
 #endif
 
 vec2 optimal_linear_lookup(float norm) {
@@ -77,6 +80,14 @@ void main() {
       direct[index] = vec4(shade_static_direct(hit, r.normal.xyz, g_static), g0);
       return;
     }
+    float v_static[SH_COUNT];
+    if (sample_static_visibility(r.position_depth.xyz, v_static)) {
+      float g_open[SH_COUNT];
+      g_open[0] = g0;
+      for (int i = 1; i < SH_COUNT; ++i) g_open[i] = 0.0;
+      direct[index] = vec4(shade_character_direct(r.position_depth.xyz, r.normal.xyz, g_open, v_static), g0);
+      return;
+    }
 #endif
     int set = lighting_cube_set(r.position_depth.xyz);
     vec3 unshadowed = vec3(lighting_lookup_dc(set, r.normal.xyz), lighting_lookup_dc(set + 1, r.normal.xyz),
@@ -119,6 +130,11 @@ void main() {
 #if STATIC_TRANSFER
   if (on_static) {
     direct[index] = vec4(shade_static_direct(hit, r.normal.xyz, g), g[0]);
+    return;
+  }
+  float v_static[SH_COUNT];
+  if (sample_static_visibility(r.position_depth.xyz, v_static)) {
+    direct[index] = vec4(shade_character_direct(r.position_depth.xyz, r.normal.xyz, g, v_static), g[0]);
     return;
   }
 #endif

@@ -1,12 +1,15 @@
 // Static receivers' PRT in the frame (render.static_transfer ratio = 1, l1 = 2): the lookup of
 // the PRT triangle under a receiver and the ratio / l1 sums of prt/static_field.h, which holds
-// the CPU twin of every line here (find_static_hit, interpolate_record, shade_static_direct).
-// Include in exponentiate.comp after the `static_*` buffers, `lighting_cube` and SH_COUNT, with
-// STATIC_TRANSFER defined 1 or 2.
+// the CPU twin of every line here (find_static_hit, interpolate_record, shade_static_direct);
+// for every other receiver the static meshes' visibility grid (prt/visibility_grid.h:
+// sample_visibility; prt::character_receiver_direct).
+// Include in exponentiate.comp after the `static_*` buffers, `lighting_cube`, SH_COUNT and
+// SH_EXPAND_JOIN, with STATIC_TRANSFER defined 1 or 2.
 #ifndef PROXYGI_STATIC_TRANSFER_GLSL
 #define PROXYGI_STATIC_TRANSFER_GLSL
 
 #define STATIC_RECORD_FLOATS (4 * SH_COUNT + 6)
+#define sh_product SH_EXPAND_JOIN(sh_product_, SH_ORDER)
 
 struct StaticHit {
   uint triangle;
@@ -93,6 +96,50 @@ vec3 shade_static_direct(StaticHit hit, vec3 normal, float g[SH_COUNT]) {
     e[channel] = max(sum + kappa * static_record(hit, vertices, 4 * SH_COUNT + channel), 0.0);
   }
 #endif
+  return e;
+}
+
+// V_s at p, trilinear between the valid ones of the 8 grid points around it, renormalised
+// (prt::sample_visibility); false outside the grid (the receiver keeps l0).
+bool sample_static_visibility(vec3 p, out float v[SH_COUNT]) {
+  for (int i = 0; i < SH_COUNT; ++i) v[i] = 0.0;
+  uvec3 size = uvec3(floatBitsToUint(static_visibility[4]), floatBitsToUint(static_visibility[5]),
+                     floatBitsToUint(static_visibility[6]));
+  if (size.x == 0u) return false;
+  vec3 origin = vec3(static_visibility[0], static_visibility[1], static_visibility[2]);
+  vec3 u = (p - origin) / static_visibility[3];
+  if (any(lessThan(u, vec3(0.0))) || any(greaterThan(u, vec3(size - 1u)))) return false;
+  uvec3 base = min(uvec3(floor(u)), max(size, uvec3(2u)) - 2u);
+  vec3 f = u - vec3(base);
+  float total = 0.0;
+  for (uint corner = 0u; corner < 8u; ++corner) {
+    uvec3 o = uvec3(corner & 1u, (corner >> 1u) & 1u, (corner >> 2u) & 1u);
+    uvec3 q = min(base + o, size - 1u);
+    float w = (o.x == 1u ? f.x : 1.0 - f.x) * (o.y == 1u ? f.y : 1.0 - f.y) * (o.z == 1u ? f.z : 1.0 - f.z);
+    uint offset = kStaticVisibilityHeader + ((q.z * size.y + q.y) * size.x + q.x) * uint(SH_COUNT);
+    if (static_visibility[offset] < 0.0) continue;  // inside a mesh (kStaticVisibilityInside)
+    total += w;
+    for (int i = 0; i < SH_COUNT; ++i) v[i] += w * static_visibility[offset + uint(i)];
+  }
+  if (!(total > kStaticVisibilityMinWeight)) return false;
+  for (int i = 0; i < SH_COUNT; ++i) v[i] /= total;
+  return true;
+}
+
+// Direct E of a receiver in the grid with proxy visibility g: (g ∗ V_s) · LH(N) from p's cube
+// set, clamped to [0, unshadowed] per channel as l0 (prt::character_receiver_direct).
+vec3 shade_character_direct(vec3 p, vec3 normal, float g[SH_COUNT], float v_static[SH_COUNT]) {
+  float visibility[SH_COUNT];
+  sh_product(g, v_static, visibility);
+  int set = lighting_cube_set(p);
+  vec3 e;
+  for (int channel = 0; channel < 3; ++channel) {
+    float lh[SH_COUNT];
+    lighting_lookup(set + channel, normal, lh);
+    float sum = 0.0;
+    for (int i = 0; i < SH_COUNT; ++i) sum += visibility[i] * lh[i];
+    e[channel] = clamp(sum, 0.0, max(kSqrtFourPi * lh[0], 0.0));
+  }
   return e;
 }
 

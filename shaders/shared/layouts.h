@@ -293,6 +293,15 @@ PROXYGI_CONST(uint, kExponentiateBindStaticPositions, 6u);  // vec4 per vertex: 
 PROXYGI_CONST(uint, kExponentiateBindStaticTriangles, 7u);  // StaticTriangle per triangle
 PROXYGI_CONST(uint, kExponentiateBindStaticGrid, 8u);       // uint: header, cell starts, cell triangles
 PROXYGI_CONST(uint, kExponentiateBindStaticRecords, 9u);    // float: prt::static_record_floats per vertex
+PROXYGI_CONST(uint, kExponentiateBindStaticVisibility, 10u); // float: header, then n² per grid point
+// The visibility grid buffer (prt/visibility_grid.h): kStaticVisibilityHeader floats (origin xyz,
+// spacing in m, points per axis xyz as uint bits, 0), then the grid's values in its layout.
+// Points per axis 0: no grid (every non-static receiver keeps l0).
+PROXYGI_CONST(uint, kStaticVisibilityHeader, 8u);
+// A grid point inside a static mesh holds this DC (and zeros); trilinear sampling leaves it out
+// and renormalises over the valid corners, below this weight the receiver keeps l0.
+PROXYGI_CONST(float, kStaticVisibilityInside, -1.0f);
+PROXYGI_CONST(float, kStaticVisibilityMinWeight, 1e-4f);
 // The grid buffer: kStaticGridHeader uints (origin xyz and cell edge as float bits, cells per
 // axis xyz, then 0), the cell starts (cells + 1, offsets into the triangle lists, which start at
 // kStaticGridHeader + cells + 1), then the triangle lists. Cells per axis 0: no static receivers.

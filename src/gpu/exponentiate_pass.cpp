@@ -20,10 +20,11 @@ Result<ExponentiatePass> ExponentiatePass::create(const Context& context, int or
                                      {kExponentiateBindStaticPositions, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                                      {kExponentiateBindStaticTriangles, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                                      {kExponentiateBindStaticGrid, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                                     {kExponentiateBindStaticRecords, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+                                     {kExponentiateBindStaticRecords, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                     {kExponentiateBindStaticVisibility, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
   std::string shader = order_variant("exponentiate.comp", order);
   if (static_transfer) shader.append(":").append(settings::name_of(level));
-  auto pipeline = make_compute_pipeline(context, shader, std::span(bindings).first(static_transfer ? 10 : 6));
+  auto pipeline = make_compute_pipeline(context, shader, std::span(bindings).first(static_transfer ? 11 : 6));
   if (!pipeline) return pipeline.error();
   ExponentiatePass pass;
   pass.pipeline_ = std::move(*pipeline);
@@ -35,7 +36,7 @@ std::vector<ResourceAccess> ExponentiatePass::accesses(const Inputs& in, const O
   std::vector<ResourceAccess> out_accesses = {reads(in.constants),      reads(in.receivers),     reads(in.log_occlusion),
                                               reads(in.optimal_linear), reads(in.lighting_cube), writes(out.direct)};
   if (static_transfer_)
-    for (const Buffer* b : {in.static_positions, in.static_triangles, in.static_grid, in.static_records})
+    for (const Buffer* b : {in.static_positions, in.static_triangles, in.static_grid, in.static_records, in.static_visibility})
       out_accesses.push_back(reads(b));
   return out_accesses;
 }
@@ -54,7 +55,8 @@ void ExponentiatePass::record(const Context& context, VkCommandBuffer commands, 
     push.storage_buffer(kExponentiateBindStaticPositions, *in.static_positions)
         .storage_buffer(kExponentiateBindStaticTriangles, *in.static_triangles)
         .storage_buffer(kExponentiateBindStaticGrid, *in.static_grid)
-        .storage_buffer(kExponentiateBindStaticRecords, *in.static_records);
+        .storage_buffer(kExponentiateBindStaticRecords, *in.static_records)
+        .storage_buffer(kExponentiateBindStaticVisibility, *in.static_visibility);
   push.push(context, commands, pipeline_);
   dispatch_grid(commands, in.receiver_width, in.receiver_height);
 }

@@ -3,7 +3,9 @@
 // OL alone when τ is the float maximum) and direct E = O_p · LH(N) from the lighting cubes.
 // CPU twin: render::exponentiate_and_shade. The static-transfer variants (render.static_transfer
 // ratio, l1: "exponentiate.comp:order<n>:<level>") also read the PRT field and give receivers on
-// a PRT triangle its E instead (static_transfer.glsl; CPU twin prt::static_receiver_direct).
+// a PRT triangle its E instead (static_transfer.glsl; CPU twin prt::static_receiver_direct), and
+// other receivers inside the static meshes' visibility grid (O_p ∗ V_s) · LH(N)
+// (prt::character_receiver_direct).
 #include "base/result.h"
 #include "gpu/frame_passes.h"
 #include "gpu/pass_barriers.h"
@@ -26,6 +28,7 @@ class ExponentiatePass {
     const Buffer* static_triangles = nullptr;
     const Buffer* static_grid = nullptr;
     const Buffer* static_records = nullptr;
+    const Buffer* static_visibility = nullptr;  // the static meshes' visibility grid (kStaticVisibilityHeader)
   };
   struct Outputs {
     const Buffer* direct = nullptr;  // vec4 per receiver: rgb E_direct, a (O_p)_0

@@ -6,6 +6,7 @@
 #include "gpu/soft_gi_frame.h"
 #include "gpu/transfer.h"
 #include "prt/static_field.h"
+#include "prt/visibility_grid.h"
 #include "shaders/shared/layouts.h"
 
 namespace proxygi::gpu {
@@ -17,6 +18,12 @@ std::uint32_t float_bits(float value) {
   return bits;
 }
 
+float bits_float(std::uint32_t bits) {
+  float value = 0.0f;
+  std::memcpy(&value, &bits, sizeof value);
+  return value;
+}
+
 template <class T>
 Result<Buffer> storage_with(Context& context, const std::vector<T>& values) {
   return create_buffer_with_data(context, as_bytes(std::span<const T>(values)),
@@ -25,7 +32,8 @@ Result<Buffer> storage_with(Context& context, const std::vector<T>& values) {
 
 }  // namespace
 
-Status SoftGiFrame::set_static_transfer(const prt::StaticTransferField* field, std::span<const float> records) {
+Status SoftGiFrame::set_static_transfer(const prt::StaticTransferField* field, std::span<const float> records,
+                                        const prt::VisibilityGrid* visibility) {
   const int order = config_.render.sh_order;
   std::vector<glm::vec4> positions;
   std::vector<gpu_layout::StaticTriangle> triangles;
@@ -50,6 +58,16 @@ Status SoftGiFrame::set_static_transfer(const prt::StaticTransferField* field, s
     grid.insert(grid.end(), g.cell_triangles.begin(), g.cell_triangles.end());
     packed_records.assign(records.begin(), records.end());
   }
+  std::vector<float> packed_visibility(gpu_layout::kStaticVisibilityHeader, 0.0f);  // size 0: no grid
+  if (visibility != nullptr && visibility->size.x > 0) {
+    if (visibility->order != order)
+      return make_error("frame: visibility grid of order " + std::to_string(visibility->order) + ", the frame's is " +
+                        std::to_string(order));
+    const glm::uvec3 n = visibility->size;
+    packed_visibility = {visibility->origin.x, visibility->origin.y, visibility->origin.z, visibility->spacing,
+                         bits_float(n.x), bits_float(n.y), bits_float(n.z), 0.0f};
+    packed_visibility.insert(packed_visibility.end(), visibility->values.begin(), visibility->values.end());
+  }
   // Storage buffers may not be empty: one unused element each when there is no field.
   if (positions.empty()) positions.emplace_back(0.0f);
   if (triangles.empty()) triangles.push_back({});
@@ -63,16 +81,20 @@ Status SoftGiFrame::set_static_transfer(const prt::StaticTransferField* field, s
   if (!g) return g.error();
   auto r = storage_with(context_, packed_records);
   if (!r) return r.error();
+  auto v = storage_with(context_, packed_visibility);
+  if (!v) return v.error();
   made.positions = std::move(*p);
   made.triangles = std::move(*t);
   made.grid = std::move(*g);
   made.records = std::move(*r);
+  made.visibility = std::move(*v);
   static_ = std::move(made);
   return {};
 }
 
 std::size_t SoftGiFrame::static_transfer_bytes() const {
-  return std::size_t(static_.positions.size() + static_.triangles.size() + static_.grid.size() + static_.records.size());
+  return std::size_t(static_.positions.size() + static_.triangles.size() + static_.grid.size() + static_.records.size() +
+                     static_.visibility.size());
 }
 
 }  // namespace proxygi::gpu

@@ -53,6 +53,13 @@ struct StaticTransferReport {
   std::size_t vertices = 0, triangles = 0;
   std::size_t cpu_bytes = 0;     // the field (prt::StaticTransferField::bytes)
   std::size_t gpu_bytes = 0;     // its buffers on the GPU (SoftGiFrame::static_transfer_bytes)
+  // The static meshes' visibility grid shading the other receivers (prt/visibility_grid.h).
+  bool grid_from_cache = false;
+  std::filesystem::path grid_file;
+  double grid_seconds = 0.0;     // its compute or cache read (included in load_seconds)
+  std::uint64_t grid_rays = 0;   // traced (0 from the cache)
+  std::size_t grid_points = 0;
+  std::size_t grid_bytes = 0;    // CPU (= GPU) memory of its values
 };
 // One line for summaries: "PRT (render.static_transfer l1): read prt-cache/prt-….bin, 21772 vertices, ...".
 std::string describe(const StaticTransferReport& report);
@@ -182,6 +189,7 @@ class SceneRenderer {
   // Each model's is computed once, on first need (created with, or changed in place to,
   // render.indirect_method vsgl), shared by its instances and kept for the renderer's life.
   std::size_t sender_exposure_computations() const { return sender_exposure_computations_; }
+  const prt::VisibilityGrid* static_visibility() const { return static_visibility_.get(); }
 
  private:
   struct ModelTextures;
@@ -220,6 +228,7 @@ class SceneRenderer {
   world::WorldState state_;  // scratch: the state evaluated for the frame being prepared
   prt::StaticFieldOptions static_options_;
   std::shared_ptr<const prt::StaticTransferField> static_field_;  // loaded once per SH order
+  std::shared_ptr<const prt::VisibilityGrid> static_visibility_;   // with it
   std::vector<float> static_records_;
   StaticTransferReport static_report_;
   quality::QualityChoice quality_;             // render.quality: the current settings' choice

@@ -58,7 +58,7 @@ Result<std::unique_ptr<SoftGiFrame>> SoftGiFrame::create(Context& context, const
   frame->environment_width_ = std::uint32_t(environment.width);
   frame->environment_height_ = std::uint32_t(environment.height);
   if (Status s = frame->build_slots(); !s) return s.error();
-  if (Status s = frame->set_static_transfer(nullptr, {}); !s) return s.error();
+  if (Status s = frame->set_static_transfer(nullptr, {}, nullptr); !s) return s.error();
   return frame;
 }
 
@@ -215,7 +215,7 @@ void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot_index
       run(*passes_.exponentiate,
           ExponentiatePass::Inputs{&slot.constants, &t.receivers, &t.log_occlusion, &tables_.optimal_linear,
                                    &tables_.lighting_cube, rw, rh, &static_.positions, &static_.triangles,
-                                   &static_.grid, &static_.records},
+                                   &static_.grid, &static_.records, &static_.visibility},
           ExponentiatePass::Outputs{&t.direct});
       break;
     case FramePass::indirect:

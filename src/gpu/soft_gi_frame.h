@@ -33,6 +33,7 @@ struct VsglLight;
 }
 namespace proxygi::prt {
 struct StaticTransferField;
+struct VisibilityGrid;
 }
 
 namespace proxygi::gpu {
@@ -120,9 +121,11 @@ class SoftGiFrame {
   // The static receivers' PRT the static-transfer variants read (render.static_transfer ratio,
   // l1): `field` packed into the layouts.h buffers with `records` (prt::bake_static_records for
   // the frame's lighting, one prt::static_record_floats(order) each; order = the frame's SH order).
-  // nullptr: no static receivers (an empty grid). No frame may be in flight. Until it is called
-  // the frame has none.
-  Status set_static_transfer(const prt::StaticTransferField* field, std::span<const float> records);
+  // nullptr: no static receivers (an empty grid). `visibility` (prt/visibility_grid.h, the
+  // frame's order; nullptr: none) shades the other receivers inside it. No frame may be in
+  // flight. Until it is called the frame has none.
+  Status set_static_transfer(const prt::StaticTransferField* field, std::span<const float> records,
+                             const prt::VisibilityGrid* visibility);
   std::size_t static_transfer_bytes() const;  // GPU memory of those buffers
   // G-buffer (shading res): xyz world position, a eye depth (0 = background); xyz normal.
   Result<image::ImageF> read_gbuffer_positions() const;
@@ -149,7 +152,7 @@ class SoftGiFrame {
     Image rsm_position, rsm_normal, rsm_flux, rsm_depth;  // RsmPass outputs (kRsmSize², every method)
   };
   struct StaticTransfer {
-    Buffer positions, triangles, grid, records;  // layouts.h kExponentiateBindStatic*
+    Buffer positions, triangles, grid, records, visibility;  // layouts.h kExponentiateBindStatic*
   };
   struct Tables {
     Buffer log_table, visibility_table, optimal_linear, lighting_cube, exact_indirect;

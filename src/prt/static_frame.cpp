@@ -9,6 +9,8 @@
 #include "prt/surfaces.h"
 #include "prt/transfer_cache.h"
 #include "render/shading.h"
+#include "sh/basis.h"
+#include "sh/product.h"
 #include "sh/exponential.h"
 
 namespace proxygi::prt {
@@ -41,6 +43,17 @@ Result<LoadedStaticField> load_static_field(const world::World& world, int order
   if (!transfer) return transfer.error();
   auto field = make_static_field(*receivers, transfer->transfer, options.spacing_m);
   if (!field) return field.error();
+  const auto grid_start = std::chrono::steady_clock::now();
+  VisibilityGridSettings grid_settings = options.grid;
+  grid_settings.margin_m = options.ground_margin_m;
+  grid_settings.directions = settings.directions;
+  auto grid = load_or_compute_visibility_grid(*receivers, order, grid_settings, dir, options.threads);
+  if (!grid) return grid.error();
+  loaded.grid_from_cache = grid->from_cache;
+  loaded.grid_file = grid->file;
+  loaded.grid_rays = grid->from_cache ? 0 : grid->grid.rays;
+  loaded.visibility = std::make_shared<const VisibilityGrid>(std::move(grid->grid));
+  loaded.grid_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - grid_start).count();
   loaded.field = std::move(*field);
   loaded.from_cache = transfer->from_cache;
   loaded.file = transfer->file;
@@ -67,6 +80,29 @@ std::optional<glm::vec3> static_receiver_direct(const render::FrameTables& table
   }
   const std::vector<float> record = interpolate_record(field, records, *hit);
   return shade_static_direct(order, level, record, visibility, lh);
+}
+
+std::optional<glm::vec3> character_receiver_direct(const render::FrameTables& tables, const VisibilityGrid& grid,
+                                                   StaticTransferLevel level, std::span<const float> log_occlusion,
+                                                   float tau, const glm::vec3& p, const glm::vec3& normal) {
+  if (level == StaticTransferLevel::l0) return std::nullopt;
+  const int order = grid.order;
+  const std::size_t nn = std::size_t(order * order);
+  std::vector<float> static_visibility(nn);
+  if (!sample_visibility(grid, p, static_visibility)) return std::nullopt;
+  std::vector<float> occlusion(nn), visibility(nn);
+  sh::exp_hybrid(order, log_occlusion, tables.optimal_linear, tau, occlusion);
+  sh::product(order, occlusion, static_visibility, visibility);
+  std::vector<float> lh(nn);
+  const int set = render::lighting_cube_set(p);
+  glm::vec3 e(0.0f);
+  for (int c = 0; c < 3; ++c) {
+    render::lookup_lighting_cube(tables.lighting_cube[std::size_t(set + c)], normal, lh);
+    float sum = 0.0f;
+    for (std::size_t i = 0; i < nn; ++i) sum += visibility[i] * lh[i];
+    e[c] = std::clamp(sum, 0.0f, std::max(float(sh::kSqrtFourPi) * lh[0], 0.0f));
+  }
+  return e;
 }
 
 }  // namespace proxygi::prt

@@ -7,6 +7,7 @@
 //   auto loaded = prt::load_static_field(world, settings.sh_order, {});   // seconds (or the cache)
 //   records = prt::bake_static_records(*loaded->field, tables.lighting);  // per lighting
 //   e = prt::static_receiver_direct(tables, *loaded->field, records, level, f, tau, p, n);
+//   if (!e) e = prt::character_receiver_direct(tables, *loaded->visibility, level, f, tau, p, n);
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -17,6 +18,7 @@
 #include "base/result.h"
 #include "prt/static_field.h"
 #include "prt/transfer.h"
+#include "prt/visibility_grid.h"
 #include "render/frame_tables.h"
 #include "scene/scene.h"
 #include "world/world.h"
@@ -28,6 +30,9 @@ struct StaticFieldOptions {
   float spacing_m = 0.1f;        // longest edge of the subdivided receivers (prt/surfaces.h)
   float ground_margin_m = 2.0f;  // the ground patch around the static meshes
   TransferSettings transfer;     // its order is replaced by the frame's SH order
+  // Static geometry shadowing the characters: its spacing and seed (margin and directions are
+  // ground_margin_m and transfer.directions, as `proxygi prt` makes it).
+  VisibilityGridSettings grid;
   std::filesystem::path cache_dir;  // empty: default_cache_dir(the world's scene)
   int threads = 0;                  // precompute threads, <= 0: all
 };
@@ -42,6 +47,12 @@ struct LoadedStaticField {
   std::filesystem::path file;  // the cache file read or written
   double seconds = 0.0;        // wall time to subdivide, compute or read, and build the lookup grid
   std::uint64_t rays = 0;      // traced (0 when read from the cache)
+  // The static meshes' visibility grid (prt/visibility_grid.h; null with the field), its cache file.
+  std::shared_ptr<const VisibilityGrid> visibility;
+  bool grid_from_cache = false;
+  std::filesystem::path grid_file;
+  double grid_seconds = 0.0;      // wall time to compute or read it (included in `seconds`)
+  std::uint64_t grid_rays = 0;    // traced (0 when read from the cache)
 };
 
 // The world's static meshes and ground patch subdivided, their transfer at `order` computed or
@@ -58,5 +69,13 @@ std::optional<glm::vec3> static_receiver_direct(const render::FrameTables& table
                                                 std::span<const float> records, StaticTransferLevel level,
                                                 std::span<const float> log_occlusion, float tau, const glm::vec3& p,
                                                 const glm::vec3& normal);
+
+// CPU twin of the same variants for a receiver that is not static (static_receiver_direct gave
+// nothing) at (p, N): O_p = HYB(f), V_s = sample_visibility(grid, p), E = clamp((O_p ∗ V_s) ·
+// LH(N), 0, √4π LH_0) per channel with LH from the cube set of p (render::lighting_cube_set, as
+// l0). Nothing for l0, or when p lies outside the grid (the receiver keeps l0's E).
+std::optional<glm::vec3> character_receiver_direct(const render::FrameTables& tables, const VisibilityGrid& grid,
+                                                   StaticTransferLevel level, std::span<const float> log_occlusion,
+                                                   float tau, const glm::vec3& p, const glm::vec3& normal);
 
 }  // namespace proxygi::prt

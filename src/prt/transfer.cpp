@@ -10,6 +10,7 @@
 #include <string>
 #include <thread>
 
+#include "prt/sampling.h"
 #include "settings/render_settings.h"
 #include "sh/basis.h"
 #include "sh/convolution.h"
@@ -120,23 +121,8 @@ class RayScene {
   RTCScene scene_ = nullptr;
 };
 
-std::uint32_t hash32(std::uint32_t x) {  // lowbias32
-  x ^= x >> 16;
-  x *= 0x7feb352dU;
-  x ^= x >> 15;
-  x *= 0x846ca68bU;
-  x ^= x >> 16;
-  return x;
-}
-
-float radical_inverse2(std::uint32_t bits) {
-  bits = (bits << 16) | (bits >> 16);
-  bits = ((bits & 0x00ff00ffu) << 8) | ((bits & 0xff00ff00u) >> 8);
-  bits = ((bits & 0x0f0f0f0fu) << 4) | ((bits & 0xf0f0f0f0u) >> 4);
-  bits = ((bits & 0x33333333u) << 2) | ((bits & 0xccccccccu) >> 2);
-  bits = ((bits & 0x55555555u) << 1) | ((bits & 0xaaaaaaaau) >> 1);
-  return float(bits) * 2.3283064365386963e-10f;
-}
+using sampling::hash32;
+using sampling::radical_inverse2;
 
 struct Frame {
   glm::vec3 t, b, n;

@@ -12,6 +12,7 @@ namespace proxygi::prt {
 namespace {
 
 constexpr char kMagic[8] = {'P', 'G', 'P', 'R', 'T', '0', '0', '1'};
+constexpr char kGridMagic[8] = {'P', 'G', 'P', 'R', 'T', 'V', '0', '1'};
 constexpr std::uint64_t kMaxFileBytes = std::uint64_t(8) << 30;
 
 struct Fnv {
@@ -64,15 +65,8 @@ class Reader {
   std::size_t pos_ = 0;
 };
 
-}  // namespace
-
-std::uint64_t transfer_key(const StaticReceivers& receivers, const TransferSettings& settings) {
-  Fnv fnv;
-  fnv.bytes(kMagic, sizeof(kMagic));
-  fnv.value(settings.order);
-  fnv.value(settings.directions);
-  fnv.value(settings.bounces);
-  fnv.value(settings.seed);
+// The receivers' geometry, albedos and outer ground (both cache keys).
+void hash_receivers(Fnv& fnv, const StaticReceivers& receivers) {
   fnv.value(std::uint64_t(receivers.surfaces.size()));
   for (const StaticSurface& s : receivers.surfaces) {
     fnv.vector(s.positions);
@@ -86,6 +80,18 @@ std::uint64_t transfer_key(const StaticReceivers& receivers, const TransferSetti
   fnv.value(g.patch_min);
   fnv.value(g.patch_max);
   fnv.value(g.albedo);
+}
+
+}  // namespace
+
+std::uint64_t transfer_key(const StaticReceivers& receivers, const TransferSettings& settings) {
+  Fnv fnv;
+  fnv.bytes(kMagic, sizeof(kMagic));
+  fnv.value(settings.order);
+  fnv.value(settings.directions);
+  fnv.value(settings.bounces);
+  fnv.value(settings.seed);
+  hash_receivers(fnv, receivers);
   return fnv.h;
 }
 
@@ -177,6 +183,93 @@ Result<CachedTransfer> load_or_compute_transfer(const StaticReceivers& receivers
   std::filesystem::create_directories(dir, ec);
   if (ec) return make_error(dir.string() + ": cannot create the PRT cache folder: " + ec.message());
   if (Status written = write_transfer_file(out.file, key, out.transfer); !written) return written.error();
+  return out;
+}
+
+std::uint64_t visibility_grid_key(const StaticReceivers& receivers, int order, const VisibilityGridSettings& settings) {
+  Fnv fnv;
+  fnv.bytes(kGridMagic, sizeof(kGridMagic));
+  fnv.value(std::int32_t(order));
+  fnv.value(settings.spacing_m);
+  fnv.value(settings.margin_m);
+  fnv.value(settings.directions);
+  fnv.value(settings.seed);
+  hash_receivers(fnv, receivers);
+  return fnv.h;
+}
+
+std::filesystem::path visibility_grid_cache_file(const std::filesystem::path& dir, std::uint64_t key) {
+  char name[40];
+  std::snprintf(name, sizeof(name), "prt-grid-%016llx.bin", static_cast<unsigned long long>(key));
+  return dir / name;
+}
+
+Status write_visibility_grid_file(const std::filesystem::path& file, std::uint64_t key, const VisibilityGrid& grid) {
+  Writer w;
+  w.append(kGridMagic, sizeof(kGridMagic));
+  w.value(key);
+  w.value(std::int32_t(grid.order));
+  w.value(grid.origin);
+  w.value(grid.spacing);
+  w.value(grid.size);
+  w.append(grid.values.data(), grid.values.size() * sizeof(float));
+  Fnv fnv;
+  fnv.bytes(w.bytes.data(), w.bytes.size());
+  w.value(fnv.h);
+  return write_file_atomically(file, std::span<const std::uint8_t>(w.bytes));
+}
+
+Result<VisibilityGrid> read_visibility_grid_file(const std::filesystem::path& file, std::uint64_t key) {
+  auto bytes = read_file(file, kMaxFileBytes);
+  if (!bytes) return bytes.error();
+  const std::string where = file.string() + ": ";
+  if (bytes->size() < sizeof(kGridMagic) + 8) return make_error(where + "truncated");
+  Fnv fnv;
+  fnv.bytes(bytes->data(), bytes->size() - 8);
+  std::uint64_t stored_sum = 0;
+  std::memcpy(&stored_sum, bytes->data() + bytes->size() - 8, 8);
+  if (stored_sum != fnv.h) return make_error(where + "checksum mismatch (corrupt or truncated)");
+  Reader r(*bytes);
+  char magic[8];
+  std::uint64_t stored_key = 0;
+  std::int32_t order = 0;
+  VisibilityGrid grid;
+  if (!r.read(magic, 8) || std::memcmp(magic, kGridMagic, 8) != 0)
+    return make_error(where + "not a proxygi PRT visibility grid (bad magic)");
+  if (!r.value(stored_key) || stored_key != key) return make_error(where + "key mismatch");
+  if (!r.value(order) || order < 1 || order > 8) return make_error(where + "bad SH order");
+  grid.order = order;
+  if (!r.value(grid.origin) || !r.value(grid.spacing) || !r.value(grid.size)) return make_error(where + "truncated");
+  if (double(grid.size.x) * grid.size.y * grid.size.z > double(kMaxVisibilityGridPoints))
+    return make_error(where + "too many grid points");
+  grid.values.resize(grid.points() * std::size_t(order * order));
+  if (!r.read(grid.values.data(), grid.values.size() * sizeof(float))) return make_error(where + "truncated");
+  if (r.position() != bytes->size() - 8) return make_error(where + "trailing bytes");
+  return grid;
+}
+
+Result<CachedVisibilityGrid> load_or_compute_visibility_grid(const StaticReceivers& receivers, int order,
+                                                             const VisibilityGridSettings& settings,
+                                                             const std::filesystem::path& dir, int threads) {
+  const std::uint64_t key = visibility_grid_key(receivers, order, settings);
+  CachedVisibilityGrid out;
+  out.file = visibility_grid_cache_file(dir, key);
+  std::error_code ec;
+  if (std::filesystem::exists(out.file, ec)) {
+    auto cached = read_visibility_grid_file(out.file, key);
+    if (cached) {
+      out.grid = std::move(*cached);
+      out.from_cache = true;
+      return out;
+    }
+    log_warning(cached.message() + "; recomputing the PRT visibility grid");
+  }
+  auto computed = compute_visibility_grid(receivers, order, settings, threads);
+  if (!computed) return computed.error();
+  out.grid = std::move(*computed);
+  std::filesystem::create_directories(dir, ec);
+  if (ec) return make_error(dir.string() + ": cannot create the PRT cache folder: " + ec.message());
+  if (Status written = write_visibility_grid_file(out.file, key, out.grid); !written) return written.error();
   return out;
 }
 

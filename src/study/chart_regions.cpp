@@ -146,6 +146,9 @@ ChartRegions make_chart_regions(const ReferenceRegionInputs& in, const sh::RgbSh
   masks(ChartRegion::thin) = mask_and(thin_region(*in.character_hits, settings.thin_width), *in.receivers);
   masks(ChartRegion::character) = mask_and(*in.character, *in.receivers);
   masks(ChartRegion::contact) = mask_and(*in.contact, *in.receivers);
+  const ref::ReceiverMask none = ref::mask_where(w, h, [](int, int) { return false; });
+  masks(ChartRegion::near_wall) = mask_and(in.near_wall ? *in.near_wall : none, *in.receivers);
+  masks(ChartRegion::open_floor) = mask_and(in.open_floor ? *in.open_floor : none, *in.receivers);
   return regions;
 }
 

@@ -16,6 +16,8 @@
 //    the 1/k receivers; thin_width = the default k).
 //  - character: the reference's character region (its center and 8 neighbours hit a character).
 //  - contact: ground within study::kContactRadiusM of a character vertex.
+//  - near_wall, open_floor (scenes with static meshes, else empty): ground within
+//    study::kNearWallM of a static mesh triangle, and farther than study::kOpenFloorM from all.
 // Bounds, per pixel over the receivers: any channel negative; any channel non-finite; any
 // channel above (U + the reference's indirect) × (1 + 1/255): brighter than unshadowed light
 // plus the reference's bounce. U is at the reference's lighting, so rows at lower SH orders can
@@ -73,6 +75,8 @@ struct ReferenceRegionInputs {
   const ref::ReceiverMask* character = nullptr;       // the character region (eroded)
   const ref::ReceiverMask* character_hits = nullptr;  // every pixel whose center ray hits a character
   const ref::ReceiverMask* contact = nullptr;
+  const ref::ReceiverMask* near_wall = nullptr;   // null: the region is empty
+  const ref::ReceiverMask* open_floor = nullptr;
 };
 ChartRegions make_chart_regions(const ReferenceRegionInputs& inputs, const sh::RgbSh& lighting,
                                 const ChartRegionSettings& settings = {});

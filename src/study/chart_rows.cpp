@@ -77,6 +77,7 @@ std::string row_label(const ChartRow& row) {
   if (!row.indirect.empty()) text << ' ' << row.indirect;
   if (!row.ground_bounce) text << " no-ground-bounce";
   if (!row.antialiasing.empty()) text << ' ' << row.antialiasing;
+  if (row.static_transfer != "l0") text << " static-" << row.static_transfer;
   return text.str();
 }
 
@@ -274,8 +275,11 @@ std::string to_region_markdown(const std::vector<ChartRow>& rows, const std::str
     return a->milliseconds < b->milliseconds;
   });
   std::ostringstream text;
-  text << "| method | all | shadow | edge | thin | character | contact | negative px | above unshadowed px | NaN/Inf px |\n";
-  text << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  text << "| method | all";
+  for (const char* name : kChartRegionNames) text << " | " << name;
+  text << " | negative px | above unshadowed px | NaN/Inf px |\n|---|---:";
+  for (int r = 0; r < kChartRegionCount + 3; ++r) text << "|---:";
+  text << "|\n";
   char cell[64];
   for (const ChartRow* row : selected) {
     std::string label = row_label(*row);
@@ -330,6 +334,7 @@ std::string to_json(const std::vector<ChartRow>& rows) {
                    {"character_luminance_ratio", row.character_luminance_ratio},
                    {"ground_bounce", row.ground_bounce},
                    {"antialiasing", row.antialiasing.empty() ? std::string("off") : row.antialiasing},
+                   {"static_transfer", row.static_transfer},
                    {"pareto", row.pareto},
                    {"default", row.is_default}});
     if (row.regions.measured) out.back()["regions"] = regions;

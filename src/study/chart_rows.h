@@ -18,10 +18,10 @@ inline constexpr const char* kAllScenes = "all";  // the scene name of rows aver
 // `bench chart --regions` (study/chart_regions.h): per region, the sum of the per-pixel relative
 // MSE and the pixel count; per-frame means when added with weight 1/frames. A region's relative
 // MSE is their ratio (NaN when the region is empty on every frame). Bounds: pixels per frame.
-enum class ChartRegion { shadow, edge, thin, character, contact };
-inline constexpr int kChartRegionCount = 5;
-inline constexpr std::array<const char*, kChartRegionCount> kChartRegionNames = {"shadow", "edge", "thin", "character",
-                                                                                 "contact"};
+enum class ChartRegion { shadow, edge, thin, character, contact, near_wall, open_floor };
+inline constexpr int kChartRegionCount = 7;
+inline constexpr std::array<const char*, kChartRegionCount> kChartRegionNames = {
+    "shadow", "edge", "thin", "character", "contact", "near_wall", "open_floor"};
 struct RegionErrors {
   bool measured = false;
   std::array<double, kChartRegionCount> error_sum{};
@@ -53,6 +53,7 @@ struct ChartRow {
   RegionErrors regions;       // measured only with --regions
   bool ground_bounce = true;  // proxy/ao/vertex: render.ground_bounce (label "no-ground-bounce" when off)
   std::string antialiasing;  // render.antialiasing when not off ("ssaa2", "ssaa4": appended to the label); else empty
+  std::string static_transfer = "l0";  // proxy: render.static_transfer (label "static-ratio", "static-l1"; l0: none)
   bool pareto = false;    // on its scene's Pareto front (set by mark_pareto_fronts)
   bool is_default = false;  // the proxy method at the product's default setting (method "proxy" only)
 };

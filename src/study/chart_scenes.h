@@ -50,7 +50,10 @@ Result<std::vector<ChartScene>> chart_scenes(const ChartSceneOptions& options);
 //   "wall-<d>"        one mannequin d m (wall_distances_m) from a 0.2 m x 2.5 m x 8 m box wall on
 //                     its left, the face at x = -d; the box is written as OUT prop_dir/chart-wall-box.glb;
 //   "pair-<d>"        two mannequins side by side, d m (pair_distances_m) between their axes;
-//   "crowd"           the built-in crowd (scene_defaults.h) with its orbiting camera.
+//   "crowd"           the built-in crowd (scene_defaults.h) with its orbiting camera;
+//   "wall-corner"     assets/scenes/wall_corner.json (assets_dir): the mannequin walking into a
+//                     wall corner with steps, the static meshes the PRT rows (static-ratio,
+//                     static-l1) act on.
 // Groups in `only`: "wall" = every wall-<d>, "pair-distance" = every pair-<d>.
 const std::vector<float>& wall_distances_m();  // 0.5, 1, 2, 4
 const std::vector<float>& pair_distances_m();  // 0.5, 1, 2, 5

@@ -5,6 +5,7 @@
 #include "anim/gltf_writer.h"
 #include "study/chart_scenes.h"
 #include "scene/scene_defaults.h"
+#include "scene/scene_parse.h"
 
 namespace proxygi::study {
 namespace {
@@ -123,6 +124,12 @@ Result<std::vector<ChartScene>> bounce_study_scenes(const ChartSceneOptions& opt
     pair.scene.characters = {standing_mannequin(-0.5f * d, 0.0f), standing_mannequin(0.5f * d, 0.4f)};
     scenes.push_back(std::move(pair));
   }
+  if (named("wall-corner")) {  // the project's PRT scene (assets/scenes/wall_corner.json)
+    auto corner = scene::load_scene(options.assets_dir / "scenes" / "wall_corner.json");
+    if (!corner) return corner.error();
+    ChartScene chart{"wall-corner", std::move(*corner), {}};
+    scenes.push_back(std::move(chart));
+  }
   if (named("crowd")) {
     ChartScene crowd{"crowd", scene::crowd_scene(), {}};
     crowd.scene.description = "Chart scene: the built-in crowd (20 mannequins), its orbiting camera.";
@@ -145,7 +152,8 @@ std::vector<std::string> expand_scene_groups(const std::vector<std::string>& nam
 }
 
 std::vector<std::string> chart_scene_names() {
-  std::vector<std::string> names = {"default", "CesiumMan", "Fox", "RiggedSimple", "pair", "contact", "wall", "pair-distance", "crowd"};
+  std::vector<std::string> names = {"default", "CesiumMan", "Fox", "RiggedSimple", "pair", "contact", "wall", "pair-distance", "crowd",
+                                    "wall-corner"};
   for (float d : wall_distances_m()) names.push_back("wall-" + metres(d));
   for (float d : pair_distances_m()) names.push_back("pair-" + metres(d));
   return names;

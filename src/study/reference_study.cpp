@@ -1,5 +1,6 @@
 #include "study/reference_study.h"
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -45,6 +46,28 @@ class VertexGrid {
   std::unordered_map<std::int64_t, std::vector<glm::vec3>> cells_;
 };
 
+// Distance from p to the triangle (a, b, c) (closest point by Voronoi regions, Ericson 5.1.5).
+float triangle_distance(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+  const glm::vec3 ab = b - a, ac = c - a, ap = p - a;
+  const float d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
+  if (d1 <= 0.0f && d2 <= 0.0f) return glm::length(ap);
+  const glm::vec3 bp = p - b;
+  const float d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
+  if (d3 >= 0.0f && d4 <= d3) return glm::length(bp);
+  const float vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0f && d1 >= 0.0f && d3 <= 0.0f) return glm::length(p - (a + d1 / (d1 - d3) * ab));
+  const glm::vec3 cp = p - c;
+  const float d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
+  if (d6 >= 0.0f && d5 <= d6) return glm::length(cp);
+  const float vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0f && d2 >= 0.0f && d6 <= 0.0f) return glm::length(p - (a + d2 / (d2 - d6) * ac));
+  const float va = d3 * d6 - d5 * d4;
+  if (va <= 0.0f && (d4 - d3) >= 0.0f && (d5 - d6) >= 0.0f)
+    return glm::length(p - (b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b)));
+  const float denominator = 1.0f / (va + vb + vc);
+  return glm::length(p - (a + ab * (vb * denominator) + ac * (vc * denominator)));
+}
+
 }  // namespace
 
 struct FrameTracer::State {
@@ -64,9 +87,16 @@ int FrameTracer::height() const { return state_->sources->scene.output.height; }
 bool FrameTracer::character_senders() const { return state_->character_senders; }
 bool FrameTracer::unshadowed_senders() const { return state_->unshadowed_senders; }
 
-void FrameTracer::region_masks(ref::ReceiverMask& ground, ref::ReceiverMask& contact, ref::ReceiverMask& other) const {
+void FrameTracer::region_masks(FrameReference& reference) const {
   const int w = width(), h = height();
-  ground = contact = other = ref::mask_where(w, h, [](int, int) { return false; });
+  ref::ReceiverMask none = ref::mask_where(w, h, [](int, int) { return false; });
+  reference.ground = reference.contact = reference.other = reference.near_wall = reference.open_floor = none;
+  std::vector<std::array<glm::vec3, 3>> walls;  // the static meshes' world triangles
+  for (const world::StaticModel& model : state_->sources->world->static_models())
+    for (const anim::PosedPrimitive& primitive : model.primitives)
+      for (std::size_t t = 0; t + 2 < primitive.indices.size(); t += 3)
+        walls.push_back({primitive.positions[primitive.indices[t]], primitive.positions[primitive.indices[t + 1]],
+                         primitive.positions[primitive.indices[t + 2]]});
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const scene::Ray ray = scene::ray_through_pixel(state_->camera, w, h, float(x) + 0.5f, float(y) + 0.5f);
@@ -74,11 +104,16 @@ void FrameTracer::region_masks(ref::ReceiverMask& ground, ref::ReceiverMask& con
       if (!hit || hit->character) continue;
       const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);
       if (std::abs(hit->position.y) > 1e-3f || hit->geometric_normal.y < 0.99f) {
-        other.receiver[i] = 1;
+        reference.other.receiver[i] = 1;
         continue;
       }
-      ground.receiver[i] = 1;
-      if (state_->character_vertices.near(hit->position, kContactRadiusM)) contact.receiver[i] = 1;
+      reference.ground.receiver[i] = 1;
+      if (state_->character_vertices.near(hit->position, kContactRadiusM)) reference.contact.receiver[i] = 1;
+      if (walls.empty()) continue;
+      float nearest = INFINITY;
+      for (const auto& t : walls) nearest = std::min(nearest, triangle_distance(hit->position, t[0], t[1], t[2]));
+      if (nearest < kNearWallM) reference.near_wall.receiver[i] = 1;
+      if (nearest > kOpenFloorM) reference.open_floor.receiver[i] = 1;
     }
 }
 
@@ -229,7 +264,7 @@ Result<FrameReference> load_or_render_reference(const ChartScene& chart, int fra
   reference.indirect = images.indirect;
   reference.receivers = ref::mask_from_image(reference.features.mask);
   reference.character = ref::mask_from_image(reference.features.character);
-  tracer.region_masks(reference.ground, reference.contact, reference.other);
+  tracer.region_masks(reference);
   reference.samples = record.samples;
   reference.trace_seconds = record.seconds;
   return reference;
@@ -248,6 +283,8 @@ Status attach_chart_regions(FrameReference& reference, const SceneSources& sourc
   inputs.character = &reference.character;
   inputs.character_hits = &character_hits;
   inputs.contact = &reference.contact;
+  inputs.near_wall = &reference.near_wall;
+  inputs.open_floor = &reference.open_floor;
   reference.regions = std::make_shared<const ChartRegions>(make_chart_regions(inputs, *lighting));
   return {};
 }

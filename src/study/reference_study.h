@@ -33,6 +33,10 @@ struct ChartRegions;  // study/chart_regions.h
 inline constexpr std::uint32_t kReferenceSeed = 1;
 inline constexpr std::uint32_t kTestSeed = 977;  // path-tracing rows: independent of the reference
 inline constexpr float kContactRadiusM = 0.3f;   // the "contact" region: ground this close to a character
+// The near_wall and open_floor regions (scenes with static meshes): ground within kNearWallM of a
+// static mesh's triangles, and ground farther than kOpenFloorM from all of them.
+inline constexpr float kNearWallM = 0.5f;
+inline constexpr float kOpenFloorM = 1.0f;
 
 struct ReferenceOptions {
   int reference_spp = 1024;
@@ -57,6 +61,8 @@ struct FrameReference {
   ref::ReceiverMask ground;    // pixels the center ray hits the ground plane (y = 0) in
   ref::ReceiverMask contact;   // ground pixels within kContactRadiusM of a character's vertex
   ref::ReceiverMask other;     // pixels the center ray hits neither a character nor the ground in (a wall)
+  ref::ReceiverMask near_wall; // ground pixels within kNearWallM of a static mesh (none without static meshes)
+  ref::ReceiverMask open_floor;// ground pixels farther than kOpenFloorM from every static mesh (same)
   std::uint32_t samples = 0;
   double trace_seconds = 0.0;  // all runs together
   // bench chart --regions: the region masks (attach_chart_regions); null: regions not scored.
@@ -100,8 +106,9 @@ class FrameTracer {
   Result<ref::SampleSums> trace(int spp, std::uint32_t seed, std::uint32_t first_sample, ref::RenderStats* stats,
                                 bool progress, ref::Sampler sampler = ref::Sampler::sobol) const;
   ref::PixelFeatures features() const;
-  // The ground, contact and other regions of FrameReference (pixel-center rays, as the character region).
-  void region_masks(ref::ReceiverMask& ground, ref::ReceiverMask& contact, ref::ReceiverMask& other) const;
+  // The ground, contact, other, near_wall and open_floor regions of FrameReference (pixel-center
+  // rays, as the character region).
+  void region_masks(FrameReference& reference) const;
   bool character_senders() const;
   bool unshadowed_senders() const;
   int width() const;

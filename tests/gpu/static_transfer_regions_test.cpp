@@ -6,8 +6,10 @@
 // the band limit's). Regions: character (the reference's), near-wall band (floor within 0.5 m of
 // a wall or step vertex), open floor (farther than 1 m), walls and steps (static, not floor).
 // The frame's floor in the corner and the walls are far too bright at l0; ratio and l1 must
-// bring their mean luminance within half of l0's bias and lower the band's relative RMSE; the
-// character (not a static receiver) must not get worse.
+// bring their mean luminance within half of l0's bias and lower the band's relative RMSE. The
+// character is not a static receiver: at ratio and l1 the static meshes' visibility grid
+// (prt/visibility_grid.h) shadows it, and its mean luminance must come within 5 % of the path
+// tracer's (the goal; l0 is +27 %, the walls hide part of its sky).
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -140,9 +142,9 @@ TEST_F(StaticTransferRegionsTest, RatioAndL1BringTheCornerFloorTowardThePathTrac
   for (int level = 1; level < 3; ++level) {
     EXPECT_LT(std::abs(scores[level][1].bias), 0.5 * std::abs(scores[0][1].bias)) << "level " << level << ": band";
     EXPECT_LT(scores[level][1].relative_rmse, scores[0][1].relative_rmse) << "level " << level << ": band";
-    // Not a static receiver, but at 192² and k = 4 its limbs are narrower than the receivers, so
-    // its pixels take bilateral taps from the walls and floor behind (F9): it may only get better.
-    EXPECT_LE(std::abs(scores[level][0].bias), std::abs(scores[0][0].bias) + 0.01) << "level " << level << ": character";
+    // Shadowed by the visibility grid: body radiance within 5 % of the path tracer.
+    EXPECT_LT(std::abs(scores[level][0].bias), 0.05) << "level " << level << ": character";
+    EXPECT_LT(scores[level][0].relative_rmse, scores[0][0].relative_rmse) << "level " << level << ": character";
     EXPECT_LT(std::abs(scores[level][3].bias), 0.5 * std::abs(scores[0][3].bias)) << "level " << level << ": walls";
   }
 }

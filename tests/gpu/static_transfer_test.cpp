@@ -2,8 +2,10 @@
 // variants ↔ prt::static_receiver_direct; validation layer on): the project's wall corner with a
 // coarse PRT (0.25 m, 64 directions, 1 bounce, its own cache folder), the mannequin near the
 // corner, at every receiver of a 128² frame: static receivers match the twin within 1e-3
-// (relative), others keep the l0 twin; the corner floor gets darker than l0 (it can fail: l0
-// has no static self-shadowing), and the level changes in place.
+// (relative), the others inside the static meshes' visibility grid (the mannequin) match
+// prt::character_receiver_direct within 1e-3, the rest keep the l0 twin; the corner floor and
+// the mannequin get darker than l0 (it can fail: l0 has neither static self-shadowing nor
+// static geometry shadowing characters), and the level changes in place.
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -29,8 +31,9 @@ float relative_error(const glm::vec3& gpu, const glm::vec3& cpu) {
 }
 
 struct LevelCounts {
-  int static_receivers = 0, shadowed_static = 0, others = 0;
+  int static_receivers = 0, shadowed_static = 0, in_grid = 0, others = 0;
   double static_sum = 0.0, l0_sum = 0.0;  // luminance of E over the static receivers: this level, l0
+  double grid_sum = 0.0, grid_l0_sum = 0.0;  // the same over the other receivers in the grid
 };
 
 LevelCounts check_level(SceneRenderer& renderer, const render::FrameTables& tables, settings::StaticTransfer level) {
@@ -43,6 +46,8 @@ LevelCounts check_level(SceneRenderer& renderer, const render::FrameTables& tabl
   const prt::StaticTransferField* field = renderer.static_field();
   EXPECT_NE(field, nullptr);
   if (field == nullptr) return counts;
+  EXPECT_NE(renderer.static_visibility(), nullptr);
+  if (renderer.static_visibility() == nullptr) return counts;
   const std::size_t nn = std::size_t(tables.settings.sh_order * tables.settings.sh_order);
   const float tau = tables.settings.hyb_tau;
   testing::for_each_receiver(frame, 1, [&](const testing::ReceiverSample& r) {
@@ -50,7 +55,18 @@ LevelCounts check_level(SceneRenderer& renderer, const render::FrameTables& tabl
     const glm::vec3 gpu(direct->at(r.x, r.y));
     const render::DirectResult l0 = render::exponentiate_and_shade(tables, f, tau, r.position, r.normal);
     const auto cpu = prt::static_receiver_direct(tables, *field, renderer.static_records(), level, f, tau, r.position, r.normal);
+    const glm::vec3 luma(0.2126f, 0.7152f, 0.0722f);
     if (!cpu) {
+      const auto shadowed = prt::character_receiver_direct(tables, *renderer.static_visibility(), level, f, tau,
+                                                           r.position, r.normal);
+      if (shadowed) {
+        EXPECT_LE(relative_error(gpu, *shadowed), 1e-3f) << settings::name_of(level) << " receiver in the grid " << r.x
+                                                         << "," << r.y << " gpu " << gpu.x << " cpu " << shadowed->x;
+        ++counts.in_grid;
+        counts.grid_sum += glm::dot(*shadowed, luma);
+        counts.grid_l0_sum += glm::dot(l0.irradiance, luma);
+        return;
+      }
       EXPECT_LE(relative_error(gpu, l0.irradiance), 1e-3f) << "non-static receiver " << r.x << "," << r.y;
       ++counts.others;
       return;
@@ -59,7 +75,6 @@ LevelCounts check_level(SceneRenderer& renderer, const render::FrameTables& tabl
                                                 << " gpu " << gpu.x << " cpu " << cpu->x;
     ++counts.static_receivers;
     if (f[0] != 0.0f) ++counts.shadowed_static;
-    const glm::vec3 luma(0.2126f, 0.7152f, 0.0722f);
     counts.static_sum += glm::dot(*cpu, luma);
     counts.l0_sum += glm::dot(l0.irradiance, luma);
   });
@@ -100,12 +115,16 @@ TEST_F(StaticTransferTest, StaticReceiversMatchTheCpuTwinAtEveryLevel) {
     ASSERT_TRUE((*renderer)->apply_settings(render, kSize, kSize).ok());
     ASSERT_TRUE((*renderer)->render(kFrame).ok());
     const LevelCounts counts = check_level(**renderer, tables, level);
-    std::printf("%s: %d static receivers (%d with proxy occlusion), %d others; static E / l0 E = %.3f\n",
+    std::printf("%s: %d static receivers (%d with proxy occlusion), %d in the visibility grid, %d others; "
+                "static E / l0 E = %.3f, in the grid %.3f\n",
                 std::string(settings::name_of(level)).c_str(), counts.static_receivers, counts.shadowed_static,
-                counts.others, counts.static_sum / counts.l0_sum);
+                counts.in_grid, counts.others, counts.static_sum / counts.l0_sum, counts.grid_sum / counts.grid_l0_sum);
     EXPECT_GE(counts.static_receivers, 500) << "the walls, steps and floor patch fill most of the 32² receivers";
     EXPECT_GE(counts.shadowed_static, 50) << "the mannequin must shadow some static receivers";
-    EXPECT_GE(counts.others, 100) << "the mannequin's receivers";
+    EXPECT_GE(counts.in_grid, 10) << "the mannequin's receivers (13 of the 32² at frame 60)";
+    EXPECT_GE(counts.others, 50) << "the ground beyond the patch (and the grid)";
+    // The walls hide part of the mannequin's sky (README: +17–27 % too bright without the grid).
+    EXPECT_LT(counts.grid_sum, 0.97 * counts.grid_l0_sum) << settings::name_of(level) << ": no static shadowing";
     // The walls hide much of the sky from the floor and each other (README: l0 is 175 % too bright).
     EXPECT_LT(counts.static_sum, 0.9 * counts.l0_sum) << settings::name_of(level) << " adds no static self-shadowing";
   }

@@ -92,5 +92,17 @@ TEST(ChartStudyScenes, ThePathTracerHitsTheWallAtItsDistance) {
   }
 }
 
+TEST(ChartStudyScenes, WallCornerIsTheProjectsPrtScene) {
+  ChartSceneOptions options = study_options();
+  options.only = {"wall-corner"};
+  auto scenes = chart_scenes(options);
+  ASSERT_TRUE(scenes.ok()) << scenes.message();
+  ASSERT_EQ(scenes->size(), 1u);
+  EXPECT_EQ((*scenes)[0].name, "wall-corner");
+  EXPECT_FALSE((*scenes)[0].scene.static_meshes.empty()) << "the walls and steps";
+  EXPECT_EQ((*scenes)[0].scene.output.width, 96);
+  EXPECT_EQ((*scenes)[0].frames.size(), 1u);
+}
+
 }  // namespace
 }  // namespace proxygi::study
