@@ -8,6 +8,7 @@
 #include "apps/matplotlib_chart.h"
 #include "base/atomic_file.h"
 #include "scene/scene.h"
+#include "study/quality_rows.h"
 
 namespace proxygi::app {
 namespace {
@@ -55,7 +56,7 @@ scenes = data["scenes"]
 columns = min(3, len(scenes))
 lines = math.ceil(len(scenes) / columns)
 fig, axes = plt.subplots(lines, columns, figsize=(6.2 * columns, 5.0 * lines), squeeze=False)
-style = {"proxy": ("tab:blue", "o"), "vertex": ("tab:red", "s"), "ao": ("tab:orange", "^"),
+style = {"proxy": ("tab:blue", "o"), "quality": ("tab:purple", "*"), "vertex": ("tab:red", "s"), "ao": ("tab:orange", "^"),
          "path": ("tab:gray", "x"), "path+guided": ("tab:green", "D")}
 for index, scene in enumerate(scenes):
     ax = axes[index // columns][index % columns]
@@ -94,6 +95,14 @@ fig.suptitle(data["machine"], fontsize=7, wrap=True)
 fig.tight_layout(rect=(0, 0, 1, 0.95))
 fig.savefig(sys.argv[1], dpi=110, format="png")
 )PY";
+
+constexpr const char* kQualitySectionIntro =
+    "Each quality row renders every chart frame with the settings render.quality chose for that frame's shot. "
+    "The oracle is the cheapest swept setting (proxy rows, averaged operator: SH order x k x upsampler) whose "
+    "relative MSE on that frame meets the target; cost / oracle is the frame's own ms (eta auto and sphere LOD "
+    "included) over the oracle row's, swept cost the same with the swept row of the chosen order, k and upsampler. "
+    "Over-modeled: the choice's order >= the oracle's and k <= the oracle's, not both equal. Goals (issue 18 item 5): "
+    "met on >= 95 % of frames, cost <= 1.2x the oracle, over-modeled on <= 10 % of frames.";
 
 }  // namespace
 
@@ -134,6 +143,12 @@ std::string chart_scores_json(const std::vector<study::ChartRow>& rows, const Ch
     out["rows"].push_back({{"scene", row.scene}, {"label", study::row_label(row)}, {"default", row.is_default},
                            {"relative_mse", row.relative_mse}, {"rmse", row.rmse}, {"ssim", row.ssim}, {"flip", row.flip}});
     if (row.regions.measured) out["rows"].back()["regions"] = full[i].at("regions");
+    // Per-frame errors (the quality rows' oracle) and what render.quality chose: no time.
+    if (!row.frames.empty()) {
+      nlohmann::json frames = full[i].at("frames");
+      for (nlohmann::json& frame : frames) frame.erase("ms_per_frame");
+      out["rows"].back()["frames"] = frames;
+    }
   }
   return out.dump(1) + "\n";
 }
@@ -141,8 +156,13 @@ std::string chart_scores_json(const std::vector<study::ChartRow>& rows, const Ch
 std::string chart_timings_json(const std::vector<study::ChartRow>& rows) {
   nlohmann::json out;
   out["rows"] = nlohmann::json::array();
-  for (const study::ChartRow& row : rows)
+  for (const study::ChartRow& row : rows) {
     out["rows"].push_back({{"scene", row.scene}, {"label", study::row_label(row)}, {"ms_per_frame", row.milliseconds}});
+    if (row.method != "quality" || row.frames.empty()) continue;
+    std::vector<double> frame_ms;
+    for (const study::ChartFrame& frame : row.frames) frame_ms.push_back(frame.milliseconds);
+    out["rows"].back()["frame_ms"] = frame_ms;
+  }
   return out.dump(1) + "\n";
 }
 
@@ -165,6 +185,8 @@ nlohmann::json chart_report_json(const std::vector<study::ChartRow>& rows, const
     return nlohmann::json{{"evaluated", goal.evaluated}, {"met", goal.met}, {"ratio", goal.ratio},
                           {"compared", goal.compared}, {"note", goal.note}};
   };
+  if (const auto quality = study::evaluate_quality_rows(rows); !quality.empty())
+    out["quality"] = nlohmann::json::parse(study::to_quality_json(quality));
   out["goals"]["scene"] = summary;
   out["goals"]["path_tracing_50x"] = goal_json(study::path_tracing_goal(rows, summary));
   out["goals"]["vertex_2x"] = goal_json(study::vertex_goal(rows, summary, settings::RenderSettings{}.sh_order));
@@ -181,8 +203,12 @@ std::string chart_summary_text(const std::vector<study::ChartRow>& rows, const C
   text << machine_line(context) << "\n\nGoals (scene " << scene << "):\n"
        << goal_line("proxy default vs guided path tracing, >= 50x less time at its error",
                     study::path_tracing_goal(rows, scene))
-       << goal_line("image space >= 2x faster than vertex-based at equal or lower error", study::vertex_goal(rows, scene, settings::RenderSettings{}.sh_order))
-       << "\n" << study::to_markdown(rows, scene);
+       << goal_line("image space >= 2x faster than vertex-based at equal or lower error", study::vertex_goal(rows, scene, settings::RenderSettings{}.sh_order));
+  for (const study::QualitySummary& q : study::summarize_quality(study::evaluate_quality_rows(rows)))
+    text << "- **render.quality " << q.quality << " (" << q.target << ")**: " << (q.goals_met() ? "met" : "not met")
+         << ": target met on " << q.met << "/" << q.frames << " frames; of " << q.reachable << " reachable, " << q.within_cost
+         << " within " << study::kQualityCostRatioGoal << "x the oracle's time, " << q.over_modeled << " over-modeled.\n";
+  text << "\n" << study::to_markdown(rows, scene);
   return text.str();
 }
 
@@ -219,6 +245,11 @@ Status write_chart_report(const std::string& folder, const std::vector<study::Ch
     for (const std::string& scene : scenes)
       markdown << "\n### " << (scene == study::kAllScenes ? "mean over scenes" : scene) << "\n\n"
                << study::to_region_markdown(rows, scene);
+  }
+  const std::vector<study::QualityEvaluation> quality = study::evaluate_quality_rows(rows);
+  if (!quality.empty()) {
+    markdown << "\n## render.quality against the sweep\n\n" << kQualitySectionIntro << "\n\n" << study::to_quality_markdown(quality);
+    if (Status s = write_file_atomically(base.string() + "-quality.json", study::to_quality_json(quality)); !s) return s;
   }
   if (Status s = write_file_atomically(base.string() + ".md", markdown.str()); !s) return s;
   return draw_matplotlib_chart(kChartScript, chart_report_json(rows, context), base.string() + ".png");

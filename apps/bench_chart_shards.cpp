@@ -17,11 +17,11 @@ using nlohmann::json;
 [[maybe_unused]] void every_row_member_is_carried(const study::ChartRow& row) {
   const auto& [scene, method, sh_order, receiver_scale, upsampling, indirect, samples, milliseconds, relative_mse, rmse,
                ssim, flip, character_relative_mse, character_luminance_ratio, regions, ground_bounce, antialiasing,
-               static_transfer, pareto, is_default] = row;
+               static_transfer, quality, quality_target, frames, pareto, is_default] = row;
   (void)scene, (void)method, (void)sh_order, (void)receiver_scale, (void)upsampling, (void)indirect, (void)samples;
   (void)milliseconds, (void)relative_mse, (void)rmse, (void)ssim, (void)flip, (void)character_relative_mse;
   (void)character_luminance_ratio, (void)regions, (void)ground_bounce, (void)antialiasing, (void)static_transfer;
-  (void)pareto, (void)is_default;
+  (void)quality, (void)quality_target, (void)frames, (void)pareto, (void)is_default;
 }
 
 // Region sums exactly as measured (the merge's means and ratios then equal a single run's).
@@ -52,6 +52,14 @@ json row_json(const study::ChartRow& row) {
           {"ground_bounce", row.ground_bounce}, {"static_transfer", row.static_transfer}, {"default", row.is_default}};
   if (!row.antialiasing.empty()) out["antialiasing"] = row.antialiasing;
   if (row.regions.measured) out["regions"] = regions_json(row.regions);
+  if (row.method == "quality") out["quality"] = {{"name", row.quality}, {"target", row.quality_target}};
+  if (!row.frames.empty()) {
+    out["frames"] = json::array();
+    for (const study::ChartFrame& frame : row.frames)
+      out["frames"].push_back({{"relative_mse", frame.relative_mse}, {"ms_per_frame", frame.milliseconds},
+                               {"sh_order", frame.sh_order}, {"receiver_scale", frame.receiver_scale},
+                               {"upsampling", frame.upsampling}});
+  }
   return out;
 }
 
@@ -76,6 +84,15 @@ study::ChartRow row_from_json(const json& j) {
   row.is_default = j.at("default").get<bool>();
   if (j.contains("antialiasing")) row.antialiasing = j.at("antialiasing").get<std::string>();
   if (j.contains("regions")) row.regions = regions_from_json(j.at("regions"));
+  if (j.contains("quality")) {
+    row.quality = j.at("quality").at("name").get<std::string>();
+    row.quality_target = j.at("quality").at("target").get<double>();
+  }
+  if (j.contains("frames"))
+    for (const json& frame : j.at("frames"))
+      row.frames.push_back({frame.at("relative_mse").get<double>(), frame.at("ms_per_frame").get<double>(),
+                            frame.at("sh_order").get<int>(), frame.at("receiver_scale").get<int>(),
+                            frame.at("upsampling").get<std::string>()});
   return row;
 }
 
@@ -205,18 +222,26 @@ Result<std::vector<study::ChartRow>> merge_shards(const std::vector<ChartShard>&
 }
 
 Status replace_timings(std::vector<study::ChartRow>& rows, std::string_view timings_text, const std::string& where) {
-  std::map<std::pair<std::string, std::string>, double> measured;
+  std::map<std::pair<std::string, std::string>, std::pair<double, std::vector<double>>> measured;
   try {
     const json j = json::parse(timings_text.begin(), timings_text.end());
     for (const json& row : j.at("rows"))
-      measured[{row.at("scene").get<std::string>(), row.at("label").get<std::string>()}] = row.at("ms_per_frame").get<double>();
+      measured[{row.at("scene").get<std::string>(), row.at("label").get<std::string>()}] = {
+          row.at("ms_per_frame").get<double>(), row.value("frame_ms", std::vector<double>{})};
   } catch (const json::exception& e) {
     return make_error(where + ": not a bench-chart-timings.json: " + e.what());
   }
   for (study::ChartRow& row : rows) {
     const auto found = measured.find({row.scene, study::row_label(row)});
     if (found == measured.end()) return make_error(where + ": no time for " + row.scene + " / " + study::row_label(row));
-    row.milliseconds = found->second;
+    row.milliseconds = found->second.first;
+    // Quality rows' frames are timed one by one (chart_timings_json writes them as frame_ms).
+    if (row.method != "quality") continue;
+    const std::vector<double>& frame_ms = found->second.second;
+    if (frame_ms.size() != row.frames.size())
+      return make_error(where + ": " + row.scene + " / " + study::row_label(row) + ": " + std::to_string(frame_ms.size()) +
+                        " frame times for " + std::to_string(row.frames.size()) + " frames");
+    for (std::size_t i = 0; i < frame_ms.size(); ++i) row.frames[i].milliseconds = frame_ms[i];
   }
   return {};
 }

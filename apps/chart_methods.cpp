@@ -55,6 +55,13 @@ std::vector<MethodSetting> method_grid(bool quick) {
     grid.push_back({settings::ShadingMethod::image_space, defaults.sh_order, defaults.receiver_scale, defaults.upsampling,
                     defaults.indirect_operator, settings::IndirectMethod::proxy, 1, true,
                     settings::VsglGrouping::vertex_ranges, settings::Antialiasing::off, level});
+  // render.quality at each named level: the chooser against the sweep (study/quality_rows.h).
+  for (const auto& [name, target] : settings::kQualityLevels) {
+    if (target == settings::kQualityManual) continue;
+    MethodSetting quality;
+    quality.quality = target;
+    grid.push_back(quality);
+  }
   for (int order : orders)
     grid.push_back({settings::ShadingMethod::vertex, order, 1, settings::Upsampling::bilateral, defaults.indirect_operator});
   for (int scale : scales)
@@ -65,7 +72,8 @@ std::vector<MethodSetting> method_grid(bool quick) {
 
 bool bounce_row_setting(const MethodSetting& setting) {
   const settings::RenderSettings defaults;
-  return setting.method == settings::ShadingMethod::image_space && setting.sh_order == defaults.sh_order &&
+  return setting.method == settings::ShadingMethod::image_space && setting.quality == settings::kQualityManual &&
+         setting.sh_order == defaults.sh_order &&
          setting.receiver_scale == defaults.receiver_scale && setting.upsampling == defaults.upsampling &&
          setting.ground_bounce && setting.antialiasing == defaults.antialiasing &&
          setting.static_transfer == settings::StaticTransfer::l0;
@@ -78,6 +86,14 @@ study::ChartRow describe_setting(const MethodSetting& setting, const std::string
   row.ground_bounce = setting.ground_bounce;
   if (setting.antialiasing != settings::Antialiasing::off) row.antialiasing = std::string(settings::name_of(setting.antialiasing));
   row.static_transfer = std::string(settings::name_of(setting.static_transfer));
+  if (setting.quality != settings::kQualityManual) {
+    row.method = "quality";
+    row.quality_target = setting.quality;
+    row.quality = std::to_string(setting.quality);
+    for (const auto& [name, target] : settings::kQualityLevels)
+      if (target == setting.quality) row.quality = std::string(name);
+    return row;
+  }
   switch (setting.method) {
     case settings::ShadingMethod::image_space:
       row.method = "proxy";
@@ -111,6 +127,28 @@ study::ChartRow describe_setting(const MethodSetting& setting, const std::string
   return row;
 }
 
+namespace {
+
+// render.quality's choice for scene frame `frame` (its time, the scene camera), applied in place
+// and timed from that frame; the chosen order, k and upsampling go into `out`.
+Status choose_for_frame(gpu::SceneRenderer& live, const settings::RenderSettings& requested, const scene::Scene& scene,
+                        int frame, int timing_frames, study::ChartFrame& out) {
+  const double time_s = scene::frame_time_s(scene.output, frame);
+  const auto width = std::uint32_t(scene.output.width), height = std::uint32_t(scene.output.height);
+  auto choice = live.choose_quality(requested, time_s, std::nullopt, height);
+  if (!choice) return choice.error();
+  if (Status applied = live.apply_choice(*choice, time_s, std::nullopt, width, height); !applied) return applied;
+  auto milliseconds = run::time_pipelined_frames(live, frame, timing_frames);
+  if (!milliseconds) return milliseconds.error();
+  out.milliseconds = *milliseconds;
+  out.sh_order = choice->settings.sh_order;
+  out.receiver_scale = choice->settings.receiver_scale;
+  if (out.receiver_scale > 1) out.upsampling = std::string(settings::name_of(choice->settings.upsampling));
+  return {};
+}
+
+}  // namespace
+
 Status run_raster_methods(gpu::Context& context, const study::ChartScene& chart, const std::vector<MethodSetting>& grid,
                           const std::vector<study::FrameReference>& references, const MethodRunOptions& options,
                           const std::function<void(std::size_t index, const study::ChartRow& row)>& on_row) {
@@ -132,6 +170,7 @@ Status run_raster_methods(gpu::Context& context, const study::ChartScene& chart,
     render.vsgl_grouping = setting.vsgl_grouping;
     render.antialiasing = setting.antialiasing;
     render.static_transfer = setting.static_transfer;
+    render.quality = setting.quality;
     grid_settings.push_back(render);
   }
   auto renderer = gpu::SceneRenderer::create(context, std::shared_ptr<const world::World>(std::move(*world)),
@@ -152,15 +191,26 @@ Status run_raster_methods(gpu::Context& context, const study::ChartScene& chart,
   if (bounce && !none_setting) return make_error("the bounce chart needs the indirect_method none setting in the grid");
   const Status swept = run::sweep_settings(**renderer, grid_settings, [&](std::size_t index, gpu::SceneRenderer& live) -> Status {
     study::ChartRow row = describe_setting(grid[index], chart.name);
-    auto milliseconds = run::time_pipelined_frames(live, scene.output.first_frame, options.timing_frames);
-    if (!milliseconds) return milliseconds.error();
-    row.milliseconds = *milliseconds;
+    const bool per_shot = row.method == "quality";
+    if (!per_shot) {
+      auto milliseconds = run::time_pipelined_frames(live, scene.output.first_frame, options.timing_frames);
+      if (!milliseconds) return milliseconds.error();
+      row.milliseconds = *milliseconds;
+    }
     for (std::size_t i = 0; i < chart.frames.size(); ++i) {
+      study::ChartFrame frame;
+      if (per_shot) {  // the choice for this frame's shot, timed from this frame
+        if (Status chosen = choose_for_frame(live, grid_settings[index], scene, chart.frames[i], options.timing_frames, frame); !chosen)
+          return chosen;
+        row.milliseconds += frame.milliseconds / double(chart.frames.size());
+      }
       auto finished = live.render(chart.frames[i]);
       if (!finished) return finished.error();
       auto scores = study::score_image(finished->hdr, references[i]);
       if (!scores) return make_error("frame " + std::to_string(chart.frames[i]) + ": " + scores.message());
       study::add_scores(row, *scores, 1.0 / double(chart.frames.size()));
+      frame.relative_mse = scores->relative_mse;
+      row.frames.push_back(frame);
       if (std::find(bounce_settings.begin(), bounce_settings.end(), index) != bounce_settings.end())
         bounce_frames[index].second.push_back(std::move(finished->hdr));
     }

@@ -28,6 +28,9 @@ struct MethodSetting {
   settings::VsglGrouping vsgl_grouping = settings::VsglGrouping::vertex_ranges;  // vsgl: render.vsgl_grouping
   settings::Antialiasing antialiasing = settings::Antialiasing::off;  // render.antialiasing
   settings::StaticTransfer static_transfer = settings::StaticTransfer::l0;  // render.static_transfer
+  // render.quality: a target makes the row method "quality", each chart frame rendered with the
+  // settings chosen for its shot (the fields above are then only what is requested).
+  float quality = settings::kQualityManual;
 };
 
 // The grid: the proxy method at SH orders 3–6 × receivers 1/1, 1/2, 1/4, 1/8 × bilateral
@@ -37,9 +40,10 @@ struct MethodSetting {
 // K = 2, 4, 8 by bone group) and none (no bounce); and the default proxy setting without the
 // ground bounce; the default setting supersampled (render.antialiasing ssaa2 and ssaa4: what the
 // edge region's error and the frame time do with anti-aliasing); the default proxy setting with
-// render.static_transfer ratio and l1 (on scenes without static meshes they render as l0).
+// render.static_transfer ratio and l1 (on scenes without static meshes they render as l0); and
+// render.quality at its three named levels (draft, balanced, high), requested on the default setting.
 // `quick`: order 4, 1/4, bilateral with the three operators, the seven vsgl rows, none, no ground
-// bounce, ssaa2 and ssaa4, the two static-transfer rows, and each
+// bounce, ssaa2 and ssaa4, the two static-transfer rows, the three quality rows, and each
 // baseline once.
 std::vector<MethodSetting> method_grid(bool quick);
 

@@ -71,6 +71,7 @@ std::string row_label(const ChartRow& row) {
     text << ' ' << row.samples << " spp";
     return text.str();
   }
+  if (row.method == "quality") return text.str() + " " + row.quality;
   if (row.sh_order > 0) text << " n" << row.sh_order;
   if (row.receiver_scale > 0) text << " k" << row.receiver_scale;
   if (!row.upsampling.empty()) text << ' ' << row.upsampling;
@@ -116,6 +117,7 @@ std::vector<ChartRow> mean_over_scenes(const std::vector<ChartRow>& rows) {
     if (covered != scenes || group.size() != scenes.size()) continue;
     ChartRow mean = *group.front();
     mean.scene = kAllScenes;
+    mean.frames.clear();  // frames belong to one scene
     mean.milliseconds = mean.relative_mse = mean.rmse = mean.ssim = mean.flip = 0.0;
     mean.character_relative_mse = mean.character_luminance_ratio = 0.0;
     for (const ChartRow* row : group) {
@@ -338,6 +340,22 @@ std::string to_json(const std::vector<ChartRow>& rows) {
                    {"pareto", row.pareto},
                    {"default", row.is_default}});
     if (row.regions.measured) out.back()["regions"] = regions;
+    if (row.method == "quality") {
+      out.back()["quality"] = row.quality;
+      out.back()["quality_target"] = row.quality_target;
+    }
+    if (!row.frames.empty()) {
+      nlohmann::json frames = nlohmann::json::array();
+      for (const ChartFrame& frame : row.frames) {
+        frames.push_back({{"relative_mse", frame.relative_mse}});
+        if (row.method == "quality")
+          frames.back().update({{"ms_per_frame", frame.milliseconds},
+                                {"sh_order", frame.sh_order},
+                                {"receiver_scale", frame.receiver_scale},
+                                {"upsampling", frame.upsampling}});
+      }
+      out.back()["frames"] = frames;
+    }
   }
   return out.dump(2);
 }

@@ -33,9 +33,21 @@ struct RegionErrors {
   void add(const RegionErrors& other, double weight);
 };
 
+// One chart frame of a rasterized row (the scene's chart frames, in order).
+struct ChartFrame {
+  double relative_mse = 0.0;
+  // Method "quality" only: this frame's own pipelined ms per frame (timed from this frame with the
+  // settings chosen for it) and the sh_order, receiver_scale and upsampling render.quality chose
+  // for its shot (upsampling empty at k = 1, as the swept rows' labels); else 0 / empty.
+  double milliseconds = 0.0;
+  int sh_order = 0;
+  int receiver_scale = 0;
+  std::string upsampling;
+};
+
 struct ChartRow {
   std::string scene;
-  std::string method;     // "proxy", "vertex", "ao", "path", "path+guided"
+  std::string method;     // "proxy", "vertex", "ao", "path", "path+guided", "quality" (render.quality with a target)
   int sh_order = 0;       // proxy methods: SH order; path tracing: 0
   int receiver_scale = 0; // proxy/ao: k; vertex: 0
   std::string upsampling; // "bilateral" / "bilinear"; empty where it does not apply
@@ -54,12 +66,18 @@ struct ChartRow {
   bool ground_bounce = true;  // proxy/ao/vertex: render.ground_bounce (label "no-ground-bounce" when off)
   std::string antialiasing;  // render.antialiasing when not off ("ssaa2", "ssaa4": appended to the label); else empty
   std::string static_transfer = "l0";  // proxy: render.static_transfer (label "static-ratio", "static-l1"; l0: none)
+  // Method "quality": the render.quality level as named ("draft", "balanced", "high") and its
+  // target relative MSE; the row's ms and errors are means over its frames, each frame rendered
+  // with the settings chosen for that frame's shot (study/quality_rows.h scores the choices).
+  std::string quality;
+  double quality_target = 0.0;
+  std::vector<ChartFrame> frames;  // rasterized rows (proxy, vertex, ao, quality); empty for path tracing and means
   bool pareto = false;    // on its scene's Pareto front (set by mark_pareto_fronts)
   bool is_default = false;  // the proxy method at the product's default setting (method "proxy" only)
 };
 
 // "proxy n4 k4 bilateral averaged", "proxy n4 k4 bilateral averaged no-ground-bounce", "proxy n4 k4 bilateral
-// averaged ssaa2", "path+guided 64 spp", ...
+// averaged ssaa2", "path+guided 64 spp", "quality balanced", ...
 std::string row_label(const ChartRow& row);
 
 // Marks, within each scene separately, the rows no other row beats in both milliseconds and
