@@ -13,8 +13,9 @@
 //        one with the lowest predicted error (met = false). A tighter target's feasible set is a
 //        subset of a looser one's, so it never costs less;
 //   shadow_eta  "auto" (η = √(c_L/ε) from the lighting, sh/influence_eta.h), resolved by the frame;
-//   proxy_lod   auto when some character's projected radius asks for fewer spheres than its rig has
-//        (radius_px / kProxyLodPixelsPerSphere < its sphere count), else off.
+//   proxy_lod   as requested: the error model has no LOD term and on the chart the LOD raised the
+//        chosen setting's error 1.3-1.6x without saving time on lavapipe (choose.cpp); the reasons
+//        say whether a coarser level would have been asked for.
 // Only image_space frames have these knobs: another method keeps the requested settings (the
 // reasons say so). The error model knows nothing of η, LOD, the indirect operator or
 // antialiasing: the frames they change are not predicted (README "render.quality").

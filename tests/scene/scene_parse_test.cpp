@@ -209,8 +209,8 @@ TEST(SceneParse, ShadowEtaAutoReadsAsEtaFromTheLightingAndIsWrittenBack) {
 // written back in the form it was read.
 TEST(SceneParse, QualityReadsItsThreeFormsAndWritesThemBack) {
   const std::pair<const char*, float> cases[] = {{R"("manual")", settings::kQualityManual},
-                                                 {R"("balanced")", 0.015f},
-                                                 {R"("draft")", 0.02f},
+                                                 {R"("balanced")", 0.009f},
+                                                 {R"("draft")", 0.012f},
                                                  {R"({"target_relative_mse": 0.011})", 0.011f}};
   for (const auto& [form, value] : cases) {
     const std::string text = std::string(R"({"schema_version": 1, "render": {"quality": )") + form + "}}";

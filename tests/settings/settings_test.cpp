@@ -79,14 +79,14 @@ TEST(SettingsFields, LimitsAndMessages) {
   EXPECT_EQ(quality->object_key, "target_relative_mse");
   EXPECT_FALSE(check_value(*quality, kQualityManual));
   EXPECT_EQ(value_name(*quality, kQualityManual), "manual");
-  EXPECT_EQ(value_name(*quality, double(0.015f)), "balanced");
+  EXPECT_EQ(value_name(*quality, double(0.009f)), "balanced");
   EXPECT_FALSE(value_name(*quality, 0.0123));
   EXPECT_EQ(*check_number(*quality, 0.0), "must be > 0 or one of \"manual\", \"draft\", \"balanced\", \"high\" (got 0)");
   EXPECT_EQ(*check_number(*quality, 1.5), "must be <= 1 or one of \"manual\", \"draft\", \"balanced\", \"high\" (got 1.5)");
   EXPECT_EQ(*check_value(*quality, -0.01), "must be > 0 or one of \"manual\", \"draft\", \"balanced\", \"high\" (got -0.01)");
-  EXPECT_FALSE(check_number(*quality, 0.02));  // draft's value as a number
+  EXPECT_FALSE(check_number(*quality, 0.012));  // draft's value as a number
   EXPECT_FALSE(value_from_name(*quality, "high", named));
-  EXPECT_EQ(named, double(0.0125f));
+  EXPECT_EQ(named, double(0.007f));
   EXPECT_EQ(*value_from_name(*quality, "best", named),
             "unknown value \"best\" (expected {\"target_relative_mse\": number} or one of \"manual\", \"draft\", "
             "\"balanced\", \"high\")");
