@@ -96,6 +96,44 @@ fig.tight_layout(rect=(0, 0, 1, 0.95))
 fig.savefig(sys.argv[1], dpi=110, format="png")
 )PY";
 
+// Reads bench-chart-quality.json on stdin; argv[1] = PNG. Left: each reachable frame's cost over
+// the oracle (the regret), right: each frame's error over its target, per level.
+constexpr const char* kQualityChartScript = R"PY(
+import json, sys
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+data = json.load(sys.stdin)
+levels = [s["quality"] for s in data["summary"]]
+scenes = sorted({f["scene"] for f in data["frames"]})
+markers = "osD^v<>"
+fig, (cost, error) = plt.subplots(1, 2, figsize=(10, 4.2))
+for si, scene in enumerate(scenes):
+    for li, level in enumerate(levels):
+        frames = [f for f in data["frames"] if f["scene"] == scene and f["quality"] == level]
+        x = [li + (si - (len(scenes) - 1) / 2) * 0.12 for _ in frames]
+        reach = [(xx, f) for xx, f in zip(x, frames) if f["reachable"]]
+        cost.scatter([xx for xx, f in reach], [f["cost_ratio"] for xx, f in reach], marker=markers[si % len(markers)],
+                     facecolors=["tab:blue" if f["met"] else "none" for xx, f in reach], edgecolors="tab:blue", s=28,
+                     label=scene if li == 0 else None)
+        error.scatter(x, [f["relative_mse"] / f["target"] for f in frames], marker=markers[si % len(markers)],
+                      facecolors=["tab:green" if f["met"] else "none" for f in frames], edgecolors="tab:green", s=28,
+                      label=scene if li == 0 else None)
+for ax, line, label in ((cost, 1.2, "cost / oracle: ms of the choice over the cheapest swept setting that meets the target"),
+                        (error, 1.0, "relative MSE / target")):
+    ax.axhline(line, color="black", lw=0.8, ls="--")
+    ax.set_xticks(range(len(levels)))
+    ax.set_xticklabels([f'{s["quality"]}\n{s["target"]:g}' for s in data["summary"]])
+    ax.set_yscale("log")
+    ax.set_ylabel(label, fontsize=7)
+    ax.grid(True, which="both", alpha=0.25)
+    ax.legend(fontsize=7)
+cost.set_title("regret per frame (filled: target met; unreachable frames left out)", fontsize=8)
+error.set_title("error per frame against its target (filled: met)", fontsize=8)
+fig.tight_layout()
+fig.savefig(sys.argv[1], dpi=110, format="png")
+)PY";
+
 constexpr const char* kQualitySectionIntro =
     "Each quality row renders every chart frame with the settings render.quality chose for that frame's shot. "
     "The oracle is the cheapest swept setting (proxy rows, averaged operator: SH order x k x upsampler) whose "
@@ -249,7 +287,12 @@ Status write_chart_report(const std::string& folder, const std::vector<study::Ch
   const std::vector<study::QualityEvaluation> quality = study::evaluate_quality_rows(rows);
   if (!quality.empty()) {
     markdown << "\n## render.quality against the sweep\n\n" << kQualitySectionIntro << "\n\n" << study::to_quality_markdown(quality);
-    if (Status s = write_file_atomically(base.string() + "-quality.json", study::to_quality_json(quality)); !s) return s;
+    const std::string quality_json = study::to_quality_json(quality);
+    if (Status s = write_file_atomically(base.string() + "-quality.json", quality_json); !s) return s;
+    if (Status s = draw_matplotlib_chart(kQualityChartScript, nlohmann::json::parse(quality_json), base.string() + "-quality.png");
+        !s)
+      return s;
+    markdown << "\n![render.quality per frame](bench-chart-quality.png)\n";
   }
   if (Status s = write_file_atomically(base.string() + ".md", markdown.str()); !s) return s;
   return draw_matplotlib_chart(kChartScript, chart_report_json(rows, context), base.string() + ".png");

@@ -135,7 +135,7 @@ class SceneRenderer {
   // Changes settings and output size in place (waits for frames in flight first). With
   // render.quality a target, the settings rendered are quality::ChooseSettingsJob's choice for the
   // last shot (the scene camera at the scene's first frame until requalify names another); the
-  // requested order, k, upsampling, shadow_eta and proxy_lod are replaced by the choice.
+  // requested order, k, upsampling and shadow_eta are replaced by the choice.
   Status apply_settings(const settings::RenderSettings& settings, std::uint32_t width, std::uint32_t height);
 
   // render.quality (quality/choose.h): the choice for `requested` at scene time `time_s` seen by

@@ -100,7 +100,7 @@ inline constexpr int kProxyLodMinSpheres = 8;
 // render.quality (issue 18; src/quality/choose.h): "manual" (kQualityManual, stored as 0) renders
 // every other setting as written; a target relative MSE against the path-traced reference (the
 // chart's metric, bench chart), written {"target_relative_mse": 0.015} or as a named level, makes
-// the renderer choose sh_order, receiver_scale, upsampling, shadow_eta and proxy_lod per shot from
+// the renderer choose sh_order, receiver_scale, upsampling and shadow_eta per shot from
 // cheap predictors (the scene's lighting, the characters' projected size) and print why.
 // The levels' targets sit on the committed chart's "all" rows (docs/bench-chart.csv, 2026-12-04):
 // draft is met by n4 k8 bilinear, balanced by n4 k4 bilinear, high only by orders 5-6 at k <= 4

@@ -25,7 +25,7 @@ chart(${quick} --shard 1/2 --out ${WORK}/shard1 --cache ${WORK}/cache_shards)
 chart(--merge ${WORK}/shard0 ${WORK}/shard1 --out ${WORK}/merged)
 same(${WORK}/single/bench-chart-scores.json ${WORK}/merged/bench-chart-scores.json)
 chart(--merge ${WORK}/shard1 ${WORK}/shard0 --out ${WORK}/replayed --timings-from ${WORK}/single/bench-chart-timings.json)
-foreach(file bench-chart-scores.json bench-chart-timings.json bench-chart.csv bench-chart.md bench-chart.png bench-chart-quality.json
+foreach(file bench-chart-scores.json bench-chart-timings.json bench-chart.csv bench-chart.md bench-chart.png bench-chart-quality.json bench-chart-quality.png
              bench-chart-bounce.csv bench-chart-bounce.md bench-chart-bounce.png)
   same(${WORK}/single/${file} ${WORK}/replayed/${file})
 endforeach()
