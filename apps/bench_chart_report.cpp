@@ -137,8 +137,8 @@ fig.savefig(sys.argv[1], dpi=110, format="png")
 constexpr const char* kQualitySectionIntro =
     "Each quality row renders every chart frame with the settings render.quality chose for that frame's shot. "
     "The oracle is the cheapest swept setting (proxy rows, averaged operator: SH order x k x upsampler) whose "
-    "relative MSE on that frame meets the target; cost / oracle is the frame's own ms (eta auto and sphere LOD "
-    "included) over the oracle row's, swept cost the same with the swept row of the chosen order, k and upsampler. "
+    "relative MSE on that frame meets the target; cost / oracle is the frame's own ms (eta auto included) over "
+    "the oracle row's, swept cost the same with the swept row of the chosen order, k and upsampler. "
     "Over-modeled: the choice's order >= the oracle's and k <= the oracle's, not both equal. Goals (issue 18 item 5): "
     "met on >= 95 % of frames, cost <= 1.2x the oracle, over-modeled on <= 10 % of frames.";
 

@@ -8,6 +8,7 @@
 #include "gpu/scene_renderer.h"
 #include "run/frame_loop.h"
 #include "run/settings_sweep.h"
+#include "settings/fields.h"
 #include "world/world.h"
 #include "scene/scene_defaults.h"
 
@@ -89,9 +90,8 @@ study::ChartRow describe_setting(const MethodSetting& setting, const std::string
   if (setting.quality != settings::kQualityManual) {
     row.method = "quality";
     row.quality_target = setting.quality;
-    row.quality = std::to_string(setting.quality);
-    for (const auto& [name, target] : settings::kQualityLevels)
-      if (target == setting.quality) row.quality = std::string(name);
+    const auto name = settings::value_name(*settings::find_field("quality"), setting.quality);
+    row.quality = name ? std::string(*name) : std::to_string(setting.quality);
     return row;
   }
   switch (setting.method) {

@@ -4,7 +4,8 @@ R = {'default': 25.93, 'CesiumMan': 49.47, 'Fox': 43.71, 'RiggedSimple': 39.21} 
 RREF = 44.0
 # The chooser's space only: the averaged operator with every other setting as default (labels
 # ending in 'averaged': no 'no-ground-bounce', 'ssaa2', 'static-l1' ... suffix).
-rows=[r for r in csv.DictReader(open(sys.argv[1] if len(sys.argv)>1 else 'docs/bench-chart.csv')) if r['method']=='proxy' and r['indirect']=='averaged' and r['label'].endswith(' averaged') and r['scene'] in R]
+chart=list(csv.DictReader(open(sys.argv[1] if len(sys.argv)>1 else 'docs/bench-chart.csv')))
+rows=[r for r in chart if r['method']=='proxy' and r['indirect']=='averaged' and r['label'].endswith(' averaged') and r['scene'] in R]
 scenes=list(R); orders=[3,4,6]; ups=['bilinear','bilateral']; knots=[1,2,3,4]
 def basis(r):
     s=r['scene']; n=int(r['sh_order']); k=int(r['receiver_scale']); up=r['upsampling']
@@ -44,7 +45,7 @@ print('floor line: F = %.6f + %.6f x ratio; mean F %.5f; rms %.5f' % (intercept,
       math.sqrt(sum((intercept + slope * OV[s] - F[s]) ** 2 for s in scenes) / 4)))
 # The chart's ms of each setting on scene 'all' (kChartMs: [order 3..6][k 1, 2, 4, 8][bilinear, bilateral]).
 all_rows = {}
-for r in csv.DictReader(open(sys.argv[1] if len(sys.argv) > 1 else 'docs/bench-chart.csv')):
+for r in chart:
     if r['scene'] == 'all' and r['method'] == 'proxy' and r['indirect'] == 'averaged' and r['label'].endswith(' averaged'):
         all_rows[(int(r['sh_order']), int(r['receiver_scale']), r['upsampling'])] = float(r['ms_per_frame'])
 for n in [3, 4, 5, 6]:

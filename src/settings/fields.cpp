@@ -100,7 +100,7 @@ constexpr auto kQualityNamed = [] {
 
 Field quality_field() {
   Field f = real<&RenderSettings::quality>(
-      "quality", "manual, or a target relative MSE the renderer chooses order, k, upsampling, eta and LOD for",
+      "quality", "manual, or a target relative MSE the renderer chooses order, k, upsampling and eta for",
       kNeedConstants, 0.0, 0.005, 0.05);
   f.max = kMaxQualityTarget;
   f.named = kQualityNamed;
