@@ -1,5 +1,6 @@
 #include "gpu/pass_timestamps.h"
 
+#include <string>
 #include <utility>
 
 #include "gpu/context.h"
@@ -64,12 +65,15 @@ void TimestampQueries::write(VkCommandBuffer commands, std::uint32_t index) cons
   vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool_, index);
 }
 
-Result<std::vector<double>> TimestampQueries::intervals_ms() const {
-  std::vector<std::uint64_t> ticks(count_);
-  PROXYGI_VK_TRY(vkGetQueryPoolResults(device_, pool_, 0, count_, ticks.size() * sizeof(std::uint64_t), ticks.data(),
+Result<std::vector<double>> TimestampQueries::intervals_ms(std::uint32_t written) const {
+  if (written == 0) written = count_;
+  if (written < 2 || written > count_)
+    return make_error("timestamps: " + std::to_string(written) + " read of a pool of " + std::to_string(count_));
+  std::vector<std::uint64_t> ticks(written);
+  PROXYGI_VK_TRY(vkGetQueryPoolResults(device_, pool_, 0, written, ticks.size() * sizeof(std::uint64_t), ticks.data(),
                                        sizeof(std::uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
   std::vector<double> ms;
-  for (std::uint32_t i = 0; i + 1 < count_; ++i) {
+  for (std::uint32_t i = 0; i + 1 < written; ++i) {
     const std::uint64_t delta = ((ticks[i + 1] & mask_) - (ticks[i] & mask_)) & mask_;  // wraps within the valid bits
     ms.push_back(double(delta) * period_ns_ * 1e-6);
   }

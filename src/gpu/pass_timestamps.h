@@ -39,9 +39,11 @@ class TimestampQueries {
 
   void reset(VkCommandBuffer commands) const;  // outside a render pass, before the first write
   void write(VkCommandBuffer commands, std::uint32_t index) const;
-  // Milliseconds between consecutive timestamps (count − 1 values), after the submission
-  // completed; the valid-bit mask and period applied.
-  Result<std::vector<double>> intervals_ms() const;
+  // Milliseconds between consecutive timestamps of the first `written` (count − 1 values when
+  // 0: all), after the submission completed; the valid-bit mask and period applied. Only
+  // timestamps written since the last reset may be read (an unwritten one never becomes ready).
+  Result<std::vector<double>> intervals_ms(std::uint32_t written = 0) const;
+  std::uint32_t count() const { return count_; }
 
  private:
   VkDevice device_ = VK_NULL_HANDLE;

@@ -295,11 +295,15 @@ Result<FrameTicket> SceneRenderer::begin(const FrameRequest& request) {
   if (Status prepared = frame_->prepare_output(request.output); !prepared) return prepared.error();
   auto draws = prepare(request, slot);
   if (!draws) return draws.error();
+  const TimestampQueries* timestamps = request.pass_timestamps ? arm_timestamps(current) : nullptr;
   Status submitted = current.in_flight.submit([&](VkCommandBuffer commands) {
+    if (timestamps) timestamps->reset(commands), timestamps->write(commands, 0);
     record_skinning(commands, slot);
-    frame_->record(commands, slot, *draws, request.output);
+    if (timestamps) timestamps->write(commands, 1);
+    frame_->record(commands, slot, *draws, request.output, timestamps, 2);
   });
   if (!submitted) return submitted.error();
+  current.submitted = std::chrono::steady_clock::now();
   current.busy = true;
   current.ticket = next_ticket_++;
   current.frame = request.frame;
@@ -324,6 +328,7 @@ Result<FinishedFrame> SceneRenderer::finish(FrameTicket ticket) {
   if (current.output.readback_hdr) finished.hdr = frame_->slot_hdr(slot);
   finished.statistics = current.statistics;
   finished.spheres = std::move(current.spheres);
+  if (current.timestamps_written > 0 || !current.timestamps_note.empty()) finished.passes = read_timestamps(current);
   current.busy = false;
   return finished;
 }

@@ -18,11 +18,14 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <span>
+#include <string>
 #include <vector>
 
 #include "base/result.h"
 #include "gpu/context.h"
 #include "gpu/material_textures.h"
+#include "gpu/pass_timestamps.h"
 #include "gpu/skin_pass.h"
 #include "gpu/soft_gi_frame.h"
 #include "prt/static_frame.h"
@@ -101,6 +104,12 @@ struct FrameRequest {
   int frame = -1;                            // the scene frame this is (bookkeeping), -1: none
   std::uint32_t debug_view = 0;              // gpu_layout::kDebugView*: an input shown instead (viewer)
   FrameOutput output = FrameOutput::readback();
+  // GPU timestamps after skinning and after each pass of this very frame, read when it finishes
+  // (FinishedFrame::passes) with no wait or submit of its own: a live HUD's pass times. Unlike
+  // time_passes nothing checks them against a fenced time; a sum longer than the frame's submit-to-
+  // finish wall time is refused (passes->timestamps false, with a note), as is a device whose
+  // timestamps are unusable.
+  bool pass_timestamps = false;
 };
 
 struct FrameTicket {
@@ -114,6 +123,7 @@ struct FinishedFrame {
   std::vector<std::uint8_t> ldr;        // RGBA8 sRGB, width × height (readback outputs)
   image::ImageF hdr;                    // linear radiance (readback outputs with hdr)
   FrameStatistics statistics;
+  std::optional<PassTimings> passes;    // FrameRequest::pass_timestamps
 };
 
 struct SkinGroup;  // scene_renderer_parts.h
@@ -194,8 +204,14 @@ class SceneRenderer {
  private:
   struct ModelTextures;
   struct Instance;
+  struct SlotState;
   explicit SceneRenderer(Context& context);
   Status upload_instances();
+  // FrameRequest::pass_timestamps (scene_pass_timestamps.cpp): the slot's queries for the frame
+  // about to be recorded (null when the device's timestamps are unusable, with the slot's note),
+  // and the finished frame's pass times.
+  const TimestampQueries* arm_timestamps(SlotState& slot);
+  PassTimings read_timestamps(SlotState& slot);
   // Computes (once per model) and binds every instance's sender exposures (scene_meshes.cpp).
   Status ensure_sender_exposure();
   Status upload_static_meshes();  // ground (a quad, or the vertex method's grid) and static meshes
@@ -246,6 +262,13 @@ class SceneRenderer {
     FrameOutput output;
     std::vector<render::Sphere> spheres;
     FrameStatistics statistics;
+    // FrameRequest::pass_timestamps: the slot's queries (made on first use), how many this frame
+    // wrote (0: not timed), for which passes, and when it was submitted.
+    std::optional<TimestampQueries> timestamps;
+    std::uint32_t timestamps_written = 0;
+    std::span<const FramePass> timed_passes;
+    std::string timestamps_note;  // why a frame asked to be timed was not
+    std::chrono::steady_clock::time_point submitted;
   };
   std::vector<SlotState> slots_;
   std::uint32_t next_slot_ = 0;

@@ -267,10 +267,15 @@ void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot_index
 }
 
 void SoftGiFrame::record(VkCommandBuffer commands, std::uint32_t slot, std::span<const DrawItem> draws,
-                         const FrameOutput& output) const {
+                         const FrameOutput& output, const TimestampQueries* timestamps,
+                         std::uint32_t first_timestamp) const {
   memory_barrier(commands);  // the previous frame on the queue may still read these targets
   PassBarriers barriers;
-  for (FramePass pass : frame_pass_order(config_.render.method)) record_pass(commands, slot, pass, draws, barriers, output);
+  std::uint32_t timestamp = first_timestamp;
+  for (FramePass pass : frame_pass_order(config_.render.method)) {
+    record_pass(commands, slot, pass, draws, barriers, output);
+    if (timestamps) timestamps->write(commands, timestamp++);
+  }
   const ResourceAccess copied[] = {reads(&targets_.ldr, VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_BLIT_BIT),
                                    reads(&targets_.hdr, VK_PIPELINE_STAGE_2_COPY_BIT)};
   barriers.before(commands, copied);

@@ -21,6 +21,7 @@
 #include "base/result.h"
 #include "gpu/draw_item.h"
 #include "gpu/frame_config.h"
+#include "gpu/pass_timestamps.h"
 #include "gpu/frame_output.h"
 #include "gpu/frame_pass_set.h"
 #include "gpu/resources.h"
@@ -74,9 +75,11 @@ class SoftGiFrame {
   Status prepare_output(const FrameOutput& output);
 
   // Records steps 2–8 for the frame written in `slot`, drawing `draws` into the G-buffer, then
-  // step 9 into `output` (the slot's readback buffers, or a caller's image).
+  // step 9 into `output` (the slot's readback buffers, or a caller's image). With `timestamps`,
+  // a GPU timestamp after the i-th pass of frame_pass_order (index first_timestamp + i).
   void record(VkCommandBuffer commands, std::uint32_t slot, std::span<const DrawItem> draws,
-              const FrameOutput& output) const;
+              const FrameOutput& output, const TimestampQueries* timestamps = nullptr,
+              std::uint32_t first_timestamp = 0) const;
   // Records one pass (gbuffer .. upsample_composite) with the barriers it needs against the
   // passes recorded before it in the same command buffer (`barriers`); the passes in
   // frame_pass_order equal record() without the output. The benchmark submits them one by one to

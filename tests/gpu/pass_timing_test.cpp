@@ -3,6 +3,7 @@
 // times are non-negative and sum to at most the frame's fenced time, or fenced CPU timings with
 // the reason; the fenced CPU clock of `bench frame` times every pass it records. Times are
 // checked for consistency only, never against a speed.
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 
@@ -58,6 +59,76 @@ TEST_F(PassTimingTest, TimestampsWhereValidElseFencedCpuTimingsWithTheReason) {
   if (context().report().driver.find("llvmpipe") != std::string::npos || context().report().name.find("llvmpipe") != std::string::npos) {
     EXPECT_TRUE(unusable.empty());
   }
+}
+
+}  // namespace
+}  // namespace proxygi::gpu
+
+namespace proxygi::gpu {
+namespace {
+
+// FrameRequest::pass_timestamps: the frame itself carries the timestamps (no frame of its own, no
+// fence), its pixels are those of the same frame untimed, and a ring slot reused without the
+// flag reports nothing.
+TEST_F(PassTimingTest, TimestampsInTheFrameShownLeaveItsPixelsAndTimeEveryPass) {
+  const std::string unusable = timestamps_unusable(context());
+  scene::Scene scene = scene::default_scene();
+  scene.output.width = scene.output.height = 64;
+  auto renderer = SceneRenderer::create(context(), scene, {PROXYGI_SOURCE_DIR "/assets", false});
+  ASSERT_TRUE(renderer.ok()) << renderer.message();
+  const auto passes = frame_pass_order((*renderer)->frame().settings().method);
+  auto request = [&](int frame, bool timed) {
+    FrameRequest r;
+    r.time_s = scene::frame_time_s(scene.output, frame);
+    r.frame = frame;
+    r.pass_timestamps = timed;
+    return r;
+  };
+  auto plain = (*renderer)->render(request(10, false));
+  ASSERT_TRUE(plain.ok()) << plain.message();
+  EXPECT_FALSE(plain->passes.has_value());
+
+  // Two frames in flight, the first timed: each slot reports only its own frame's timestamps.
+  auto first = (*renderer)->begin(request(10, true));
+  ASSERT_TRUE(first.ok()) << first.message();
+  auto second = (*renderer)->begin(request(11, false));
+  ASSERT_TRUE(second.ok()) << second.message();
+  auto timed = (*renderer)->finish(*first);
+  ASSERT_TRUE(timed.ok()) << timed.message();
+  auto untimed = (*renderer)->finish(*second);
+  ASSERT_TRUE(untimed.ok()) << untimed.message();
+  EXPECT_FALSE(untimed->passes.has_value());
+  EXPECT_EQ(timed->ldr, plain->ldr) << "timestamps changed the frame";
+  ASSERT_TRUE(timed->passes.has_value());
+  const PassTimings& t = *timed->passes;
+  EXPECT_EQ(t.proxies, timed->statistics.proxies);
+  if (!unusable.empty()) {
+    EXPECT_FALSE(t.timestamps);
+    EXPECT_NE(t.note.find(unusable), std::string::npos) << t.note;
+    return;
+  }
+  ASSERT_TRUE(t.timestamps) << t.note;
+  EXPECT_TRUE(t.note.empty()) << t.note;
+  double sum = t.milliseconds[std::size_t(FramePass::skin)];
+  for (FramePass pass : passes) {
+    EXPECT_GE(t.milliseconds[std::size_t(pass)], 0.0) << frame_pass_name(pass);
+    sum += t.milliseconds[std::size_t(pass)];
+  }
+  EXPECT_GT(sum, 0.0);
+  for (std::size_t p = 0; p < std::size_t(FramePass::count); ++p) {  // passes the method does not record stay 0
+    if (p != std::size_t(FramePass::skin) && std::find(passes.begin(), passes.end(), FramePass(p)) == passes.end()) {
+      EXPECT_EQ(t.milliseconds[p], 0.0) << frame_pass_name(FramePass(p));
+    }
+  }
+  std::printf("in-frame timestamps: sum %.3f ms\n", sum);
+
+  // The slot of the timed frame, reused untimed, reports nothing.
+  auto again = (*renderer)->render(request(12, false));
+  ASSERT_TRUE(again.ok()) << again.message();
+  auto reused = (*renderer)->render(request(13, false));
+  ASSERT_TRUE(reused.ok()) << reused.message();
+  EXPECT_FALSE(again->passes.has_value());
+  EXPECT_FALSE(reused->passes.has_value());
 }
 
 }  // namespace
