@@ -1,6 +1,6 @@
 // proxygi view [SCENE.json | MODEL.glb | MODEL.gltf | mannequin | default | crowd] [--offscreen] [--script FILE.json]
 //              [--width W --height H] [--no-vsync] [--no-adaptive] [--no-ui] [--no-ui-cache] [--play] [--validation]
-//              [--max-frames N] [--state-out FILE.json] [--device NAME|INDEX]
+//              [--max-frames N] [--state-out FILE.json] [--measure-blocks N] [--device NAME|INDEX]
 // The interactive viewer (src/view): a window with the frame, its HUD and live settings, or an
 // offscreen image driven by a script. Screenshots go through the recorder's PNG writer.
 #include <chrono>
@@ -9,6 +9,7 @@
 #include "apps/commands.h"
 #include "settings/limits.h"
 #include "image/image.h"
+#include "view/measure_blocks.h"
 #include "view/viewer_app.h"
 
 namespace proxygi::app {
@@ -21,6 +22,7 @@ struct ViewArgs {
   int width = 1280, height = 720;
   bool no_vsync = false, no_adaptive = false, no_ui = false, no_ui_cache = false, validation = false, play = false;
   int max_frames = 0;
+  int measure_blocks = 0;
   std::string state_out;
   std::string device;
 };
@@ -40,6 +42,7 @@ int run_view(const ViewArgs& args, std::chrono::steady_clock::time_point started
   options.ui_cache = !args.no_ui_cache;
   options.play = args.play;
   options.max_frames = args.max_frames;
+  options.measure_block_frames = args.measure_blocks;
   options.state_out = args.state_out;
   options.write_png = image::write_png_rgba8;  // the recorder's writer: the bytes as they are
   options.started = started;
@@ -74,6 +77,10 @@ void add_view_command(CLI::App& app, CommandRunner& runner) {
   command->add_flag("--validation", args->validation, "Vulkan validation on; any message fails the run");
   command->add_option("--max-frames", args->max_frames, "quit after N frames")->check(CLI::NonNegativeNumber);
   command->add_option("--state-out", args->state_out, "write the final viewer state as JSON (tests)");
+  command->add_option("--measure-blocks", args->measure_blocks,
+                      "measurement: blocks of N frames cycle through window (UI, present), offscreen (no UI) and "
+                      "readback (as bench frame) endings; block means in the --state-out file")
+      ->check(CLI::Range(view::MeasureBlocks::kWarmupFrames + 1, 100000));
   add_quiet_flag(*command);
   add_device_option(*command, args->device);
   command->callback([args, started, &runner] { runner = [args, started] { return run_view(*args, started); }; });

@@ -7,7 +7,12 @@
 # Needs xvfb-run. Usage: scripts/viewer-measure.sh [OUT_DIR]   (default: viewer-measure-out/)
 # Environment: PROXYGI (default build/release/apps/proxygi), SHARED (default ../shared), REPS (3),
 # BEFORE (another build, run interleaved with this one), ONLY_UI=1 (the 512² comparison alone),
-# NO_CACHE=1 (also this build with --no-ui-cache: the UI rasterized onto every frame).
+# NO_CACHE=1 (also this build with --no-ui-cache: the UI rasterized onto every frame), FRAMES
+# (frames per viewer run, default 150: several seconds, so a run weighs the HUD's once-a-second
+# and five-second work as a person's session does).
+# Frame times are the state file's steady mean (frame_ms_steady: every frame after the first
+# run::kWarmupFrames, as `bench frame` times frames after as many warm-up frames); a build
+# without it gives frame_ms, the mean of its last 128 frames.
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 B=$(realpath "${PROXYGI:-$ROOT/build/release/apps/proxygi}")
@@ -18,15 +23,19 @@ mkdir -p "$OUT" && cd "$OUT"
 # frame_parts_ms: acquire, render = CPU prepare + submit + ring waits, ui_build, ui_submit,
 # present; on lavapipe the device's work shows as waiting in ui_submit offscreen and in present
 # in a window, where the software swapchain waits for the frame before copying it to X).
+FRAMES=${FRAMES:-150}
+STEADY="def steady(s): return s.get('frame_ms_steady', s['frame_ms'])['mean']"
 fps() { /usr/bin/python3 -c "
 import json, sys
+$STEADY
 s = json.load(open(sys.argv[1]))
 parts = ' '.join('%s %.2f' % (k, v) for k, v in s.get('frame_parts_ms', {}).items() if v >= 0.005)
-print('fps %.2f frame_ms %.1f internal %s frames %d | %s' % (s['fps_mean'], s['frame_ms']['mean'], s['internal'], s['frames'], parts))" "$1"; }
+print('fps %.2f frame_ms %.1f internal %s frames %d | %s' % (1000 / steady(s), steady(s), s['internal'], s['frames'], parts))" "$1"; }
 # ratio TAG w_ui.json w_noui.json off.json: prints the repetition's ratios and appends them to ratios.txt.
 ratio() { /usr/bin/python3 -c "
 import json, sys
-ms = [json.load(open(f))['frame_ms']['mean'] for f in sys.argv[2:]]
+$STEADY
+ms = [steady(json.load(open(f))) for f in sys.argv[2:]]
 print('UI + present %+.1f %% (window with UI %.1f ms / offscreen without %.1f ms); present alone %+.1f %%' % (100 * (ms[0] / ms[2] - 1), ms[0], ms[2], 100 * (ms[1] / ms[2] - 1)))
 open('ratios.txt', 'a').write('%s vs_offscreen %.4f\n%s present_alone %.4f\n' % (sys.argv[1], ms[0] / ms[2], sys.argv[1], ms[1] / ms[2]))" "$@"; }
 load() { cut -d' ' -f1 /proc/loadavg; }
@@ -44,18 +53,19 @@ for rep in $(seq "$REPS"); do
     bin=${entry#nocache:}; ui_flags=""
     tag=$([[ "$bin" == "$B" ]] && echo "" || echo " (BEFORE)")
     [[ "$entry" == nocache:* ]] && ui_flags="--no-ui-cache" && tag=" (--no-ui-cache)"
-    xvfb-run -a "$bin" view default --play --max-frames 60 --width 512 --height 512 --no-adaptive $ui_flags --state-out w_ui.json >/dev/null 2>&1
+    xvfb-run -a "$bin" view default --play --max-frames $FRAMES --width 512 --height 512 --no-adaptive $ui_flags --state-out w_ui.json >/dev/null 2>&1
     echo -n "window, UI$tag:         "; fps w_ui.json
-    xvfb-run -a "$bin" view default --play --max-frames 60 --width 512 --height 512 --no-adaptive --no-ui --state-out w_noui.json >/dev/null 2>&1
+    xvfb-run -a "$bin" view default --play --max-frames $FRAMES --width 512 --height 512 --no-adaptive --no-ui --state-out w_noui.json >/dev/null 2>&1
     echo -n "window, no UI$tag:      "; fps w_noui.json
-    "$bin" view default --offscreen --play --max-frames 60 --width 512 --height 512 --no-adaptive --no-ui --state-out off.json >/dev/null 2>&1
+    "$bin" view default --offscreen --play --max-frames $FRAMES --width 512 --height 512 --no-adaptive --no-ui --state-out off.json >/dev/null 2>&1
     echo -n "offscreen, no UI$tag:   "; fps off.json
     echo -n "rep $rep$tag: "; ratio "${tag:- (this build)}" w_ui.json w_noui.json off.json
     # The issue's own baseline: `bench frame`'s pipelined loop, same size and setting, same minute.
     bench_ms=$("$bin" bench frame --size 512 --frames 30 --only default 2>&1 | awk '/^default +image +compute 1\/4/ {print $8}')
     /usr/bin/python3 -c "
 import json, sys
-ui = json.load(open('w_ui.json'))['frame_ms']['mean']
+$STEADY
+ui = steady(json.load(open('w_ui.json')))
 print('rep $rep$tag: window with UI %.1f ms / bench frame %.1f ms: %+.1f %%' % (ui, float(sys.argv[1]), 100 * (ui / float(sys.argv[1]) - 1)))
 open('ratios.txt', 'a').write('%s vs_bench_frame %.4f\n' % (sys.argv[2], ui / float(sys.argv[1])))" "$bench_ms" "${tag:- (this build)}"
   done

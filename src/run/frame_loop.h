@@ -26,8 +26,12 @@ struct FrameLoopOptions {
 Status render_frames(gpu::SceneRenderer& renderer, std::span<const int> frames, const FrameLoopOptions& options,
                      const FrameCallback& on_finished);
 
-// Renders frames first .. first + 1 to warm up, then `frames` frames from first + 2 pipelined
-// (two in flight, as `record` runs, LDR and HDR read back); returns milliseconds per frame.
+// Frames rendered before any is timed (the viewer's steady frame times skip as many).
+inline constexpr int kWarmupFrames = 2;
+
+// Renders frames first .. first + kWarmupFrames − 1 to warm up, then `frames` frames from
+// first + kWarmupFrames pipelined (two in flight, as `record` runs, LDR and HDR read back);
+// returns milliseconds per frame.
 Result<double> time_pipelined_frames(gpu::SceneRenderer& renderer, int first, int frames);
 
 }  // namespace proxygi::run

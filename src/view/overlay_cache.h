@@ -37,10 +37,12 @@ bool redraw_due(const OverlayChange& change);
 struct PixelRect {
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
   bool empty() const { return x1 <= x0 || y1 <= y0; }
+  bool operator==(const PixelRect&) const = default;
 };
 // Disjoint rectangles covering every pixel of `touched` (clamped to width × height): the
-// kOverlayTile squares they reach, merged into runs along each row of squares. Disjoint, so
-// blending each once is exact; pixels outside are the overlay's transparent black.
+// kOverlayTile squares they reach, merged into runs along each row of squares, and runs of
+// consecutive rows spanning the same columns into one rectangle. Disjoint, so blending each once
+// is exact; pixels outside are the overlay's transparent black.
 std::vector<PixelRect> covering_rects(std::span<const PixelRect> touched, int width, int height,
                                       int tile = kOverlayTile);
 

@@ -18,6 +18,7 @@ Result<std::unique_ptr<Swapchain>> Swapchain::create(gpu::Context& context, std:
 }
 
 Swapchain::~Swapchain() {
+  (void)drop_started();
   vkDeviceWaitIdle(context_.device());
   destroy_images();
   if (swapchain_) vkDestroySwapchainKHR(context_.device(), swapchain_, nullptr);
@@ -31,7 +32,16 @@ void Swapchain::destroy_images() {
   render_done_.clear();
 }
 
+Status Swapchain::drop_started() {
+  if (!started_) return {};
+  started_.reset();
+  PROXYGI_VK_TRY(vkWaitForFences(context_.device(), 1, &acquire_fence_, VK_TRUE, UINT64_MAX));
+  PROXYGI_VK_TRY(vkResetFences(context_.device(), 1, &acquire_fence_));
+  return {};
+}
+
 Status Swapchain::recreate(std::uint32_t width, std::uint32_t height) {
+  if (Status s = drop_started(); !s) return s;
   PROXYGI_VK_TRY(vkDeviceWaitIdle(context_.device()));
   ++recreations_;
   return build(width, height);
@@ -123,15 +133,26 @@ Status Swapchain::build(std::uint32_t width, std::uint32_t height) {
   return {};
 }
 
-Result<std::optional<Swapchain::Acquired>> Swapchain::acquire() {
+Result<bool> Swapchain::start_acquire() {
+  if (started_) return true;
   std::uint32_t index = 0;
   const VkResult result =
       vkAcquireNextImageKHR(context_.device(), swapchain_, UINT64_MAX, VK_NULL_HANDLE, acquire_fence_, &index);
-  if (result == VK_ERROR_OUT_OF_DATE_KHR) return std::optional<Acquired>();
+  if (result == VK_ERROR_OUT_OF_DATE_KHR) return false;  // the fence is not signalled
   if (result != VK_SUCCESS && result != VK_SUBOPTIMAL_KHR) return gpu::vulkan_error("vkAcquireNextImageKHR", result);
+  started_ = Acquired{index, result == VK_SUBOPTIMAL_KHR};
+  return true;
+}
+
+Result<std::optional<Swapchain::Acquired>> Swapchain::acquire() {
+  auto started = start_acquire();
+  if (!started) return started.error();
+  if (!*started) return std::optional<Acquired>();
+  const Acquired acquired = *started_;
+  started_.reset();
   PROXYGI_VK_TRY(vkWaitForFences(context_.device(), 1, &acquire_fence_, VK_TRUE, UINT64_MAX));
   PROXYGI_VK_TRY(vkResetFences(context_.device(), 1, &acquire_fence_));
-  return std::optional<Acquired>(Acquired{index, result == VK_SUBOPTIMAL_KHR});
+  return std::optional<Acquired>(acquired);
 }
 
 Result<bool> Swapchain::present(std::uint32_t index, VkSemaphore wait) {

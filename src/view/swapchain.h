@@ -4,7 +4,10 @@
 // (they land unchanged) and Dear ImGui's colors are meant for a UNORM target.
 //
 // acquire() waits on a fence instead of a semaphore: the renderer's submissions take no wait
-// semaphores, and on a CPU device the wait costs nothing measurable. Out-of-date and
+// semaphores, and on a CPU device the wait costs nothing measurable. start_acquire() asks for
+// the next image early (while the previous frame still renders and waits to be presented), so
+// that acquire() later only collects it: on a software swapchain the acquisition's own work
+// then overlaps the device's instead of delaying the next submit. Out-of-date and
 // suboptimal results come back as `stale` so the caller recreates at the window's new size; a
 // zero-size (minimized) window is never given a swapchain.
 #include <cstdint>
@@ -35,8 +38,13 @@ class Swapchain {
     std::uint32_t index = 0;
     bool stale = false;  // suboptimal: usable now, recreate after presenting
   };
-  // Nothing when the swapchain is out of date (recreate and try again).
+  // Nothing when the swapchain is out of date (recreate and try again). Collects the image
+  // start_acquire asked for, if any.
   Result<std::optional<Acquired>> acquire();
+  // Asks for the next image without waiting for it (at most one at a time; the swapchain has one
+  // image more than the surface's minimum, so this may run while one image waits to be
+  // presented). False when out of date.
+  Result<bool> start_acquire();
   // Presents image `index` after `wait`; returns false when the swapchain went stale.
   Result<bool> present(std::uint32_t index, VkSemaphore wait);
 
@@ -63,6 +71,8 @@ class Swapchain {
   std::vector<TargetImage> images_;
   std::vector<VkSemaphore> render_done_;
   VkFence acquire_fence_ = VK_NULL_HANDLE;
+  std::optional<Acquired> started_;  // start_acquire's image, its fence not yet waited for
+  Status drop_started();             // waits for it and forgets it (before a rebuild)
   int recreations_ = 0;
 };
 

@@ -93,6 +93,11 @@ Status Viewer::init() {
   if (!ui_pass) return ui_pass.error();
   ui_pass_ = std::move(*ui_pass);
 
+  if (options_.measure_block_frames > 0) {
+    if (options_.measure_block_frames <= MeasureBlocks::kWarmupFrames)
+      return make_error("measure blocks need more than " + std::to_string(MeasureBlocks::kWarmupFrames) + " frames each");
+    blocks_.emplace(options_.measure_block_frames, window_ != nullptr);
+  }
   loader_.open(options_.open, nullptr);
   if (script_) {
     if (!rig_hold_open_) {  // a script waits for the rigs: no hold

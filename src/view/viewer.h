@@ -14,6 +14,8 @@
 #include "gpu/context.h"
 #include "gpu/resources.h"
 #include "gpu/scene_renderer.h"
+#include "run/frame_loop.h"
+#include "view/measure_blocks.h"
 #include "view/scene_loader.h"
 #include "view/swapchain.h"
 #include "view/ui_pass.h"
@@ -63,9 +65,12 @@ class Viewer {
   Status frame();
   Status prepare_frame(std::uint32_t display_width, std::uint32_t display_height);
   Status requalify(std::uint32_t height);  // render.quality: a new choice when the camera moved
-  Status render_into(const TargetImage& target);
+  // The frame into `target`, or read back as `bench frame` does (FrameEnd::readback: no target).
+  Status render_into(const TargetImage& target, FrameEnd end);
+  Status measured_frame(FrameEnd end);  // a measure-blocks frame that is not presented
   Status finish_oldest();  // waits for the oldest frame in flight
   Status finish_all();
+  void show_pass_timings(const gpu::PassTimings& timings, const std::string& clock);  // the HUD's
   void evaluate_world();
   void adapt_resolution(double frame_ms);
   void build_ui(std::uint32_t width, std::uint32_t height);
@@ -131,9 +136,17 @@ class Viewer {
   double ui_dt_s_ = 0.0;  // wall time since the previous frame (ImGui's step)
   std::chrono::steady_clock::time_point last_pass_timing_;
   bool want_pass_timing_ = true;
+  // A fenced time_passes found the device's timestamps plausible: later pass times come from
+  // timestamps in the frames shown (FrameRequest::pass_timestamps), without a frame of their own.
+  bool timestamps_trusted_ = false;
+  int pass_timings_shown_ = 0, in_frame_pass_timings_ = 0;  // state file
   std::vector<PassTime> passes_;
   std::string pass_clock_;  // how passes_ were measured (HUD)
-  FrameTimes times_;
+  FrameTimes times_;  // the HUD's: the last 128 frames
+  SteadyTimes steady_times_{run::kWarmupFrames};  // the state file's: every frame after the warm-up
+  std::optional<MeasureBlocks> blocks_;            // ViewerOptions::measure_block_frames
+  std::optional<gpu::Image> measure_image_;        // the window's offscreen blocks draw here
+  bool ui_suppressed_ = false;                     // this frame ends without the UI (measure blocks)
   FrameParts parts_;
   bool ui_input_ = false;
   glm::vec2 last_mouse_{-1e30f, -1e30f};  // ImGui's pointer at the previous frame  // an input event arrived this frame (the overlay shows it at once)

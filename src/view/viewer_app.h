@@ -42,8 +42,14 @@ struct ViewerOptions {
   // rasterized onto every frame.
   bool ui_cache = true;
   bool play = false;                 // start playing
+  // The HUD's pass times come from GPU timestamps in a frame shown, this often (seconds), once a
+  // fenced timing found the device's timestamps plausible; else a fenced frame every 5 s.
+  double pass_timing_period_s = 1.0;
   std::optional<Script> script;      // drive the viewer from a script (fixed time step)
   int max_frames = 0;                // stop after this many rendered frames (0: no limit)
+  // Measurement (measure_blocks.h): blocks of this many frames cycle through window, offscreen
+  // and readback endings; their block means go to the state file. 0: off.
+  int measure_block_frames = 0;
   std::filesystem::path state_out;   // write the final viewer state here as JSON (tests)
   std::filesystem::path screenshot_dir = "screenshots";  // F12
   PngWriter write_png;

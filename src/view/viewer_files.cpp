@@ -102,7 +102,17 @@ Status Viewer::write_state() const {
   json["ui_screenshots_reusing_overlay"] = screenshots_reusing_;
   json["frames_without_proxies"] = frames_without_proxies_;
   json["fps_mean"] = times_.mean() > 0.0 ? 1000.0 / times_.mean() : 0.0;
-  json["frame_ms"] = {{"mean", times_.mean()}, {"min", times_.min()}, {"max", times_.max()}};
+  json["frame_ms"] = {{"mean", times_.mean()}, {"min", times_.min()}, {"max", times_.max()}};  // last 128 frames
+  json["frame_ms_steady"] = {{"mean", steady_times_.mean()}, {"min", steady_times_.min()}, {"max", steady_times_.max()},
+                             {"frames", steady_times_.frames()}, {"warmup_frames", run::kWarmupFrames}};
+  if (blocks_) {  // --measure-blocks: each kind's block means, block k of every kind neighbours
+    nlohmann::json blocks = {{"block_frames", blocks_->block_frames()}, {"warmup_frames", MeasureBlocks::kWarmupFrames}};
+    for (std::size_t e = 0; e < std::size_t(FrameEnd::count); ++e)
+      blocks[frame_end_name(FrameEnd(e))] = blocks_->block_means(FrameEnd(e));
+    json["measure_blocks_ms"] = blocks;
+  }
+  json["pass_timings_shown"] = pass_timings_shown_;        // HUD pass-time updates
+  json["in_frame_pass_timings"] = in_frame_pass_timings_;  // of them, from timestamps in a frame shown
   nlohmann::json parts = nlohmann::json::object();
   for (std::size_t p = 0; p < std::size_t(FramePart::count); ++p)
     parts[frame_part_name(FramePart(p))] = parts_.frames ? parts_.sum_ms[p] / parts_.frames : 0.0;

@@ -24,6 +24,7 @@ static_assert(int(View::receivers) == int(gpu_layout::kDebugViewReceivers) && in
 
 constexpr double kScales[] = {1.0, 0.75, 0.5, 0.375, 0.25};  // internal / display resolution
 constexpr int kAdaptWindow = 16;                              // frames measured per decision
+// The HUD's pass times without trusted timestamps: a fenced frame of its own this often.
 constexpr double kPassTimingPeriodS = 5.0;
 
 const char* present_name(VkPresentModeKHR mode) {
@@ -137,15 +138,24 @@ Status Viewer::requalify(std::uint32_t height) {
   return {};
 }
 
-Status Viewer::render_into(const TargetImage& target) {
-  if (!renderer_) return clear_target(*context_, target);
+Status Viewer::render_into(const TargetImage& target, FrameEnd end) {
+  if (!renderer_) return end == FrameEnd::readback ? Status{} : clear_target(*context_, target);
   gpu::FrameRequest request;
   request.state = &state_;
   request.frame = core_->state().playback.frame();
   request.debug_view = std::uint32_t(core_->state().view);
-  request.output = gpu::FrameOutput::into({target.image, target.format, target.width, target.height,
-                                           VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
+  request.output = end == FrameEnd::readback
+                       ? gpu::FrameOutput::readback(true)  // as run::time_pipelined_frames
+                       : gpu::FrameOutput::into({target.image, target.format, target.width, target.height,
+                                                 VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
   request.output.float_targets = false;  // the viewer shows the 8-bit frame only
+  const bool hud = ui_with_ && core_->state().toggles.hud && !script_;
+  const auto since_timing = std::chrono::steady_clock::now() - last_pass_timing_;
+  if (hud && timestamps_trusted_ && (want_pass_timing_ || since_timing >= std::chrono::duration<double>(options_.pass_timing_period_s))) {
+    want_pass_timing_ = false;
+    last_pass_timing_ = std::chrono::steady_clock::now();
+    request.pass_timestamps = true;  // read in finish_oldest, no wait of its own
+  }
   // Frames in flight: the next frame is prepared on the CPU while the device still renders the
   // previous one; only when every ring slot is busy does the loop wait for the oldest.
   while (in_flight_.size() >= kFramesInFlight)
@@ -168,27 +178,35 @@ Status Viewer::render_into(const TargetImage& target) {
     rig_hold_open_ = true;
     rig_hold_.set_value();
   }
-  if (options_.show_ui && core_->state().toggles.ui && core_->state().toggles.hud && !script_ &&
+  // Until a fenced timing has shown the device's timestamps plausible (and after they were
+  // refused once), the HUD times a frame of its own, fenced.
+  if (hud && !timestamps_trusted_ &&
       (want_pass_timing_ || std::chrono::steady_clock::now() - last_pass_timing_ > std::chrono::duration<double>(kPassTimingPeriodS))) {
     want_pass_timing_ = false;
     last_pass_timing_ = std::chrono::steady_clock::now();
     parts_.lap(FramePart::render);
     if (Status s = finish_all(); !s) return s;  // pass timing needs an idle ring
     if (auto timings = renderer_->time_passes(core_->state().playback.frame(), gpu::PassClock::timestamps_if_valid)) {
-      passes_.clear();
       char label[256];
       if (timings->timestamps)
-        std::snprintf(label, sizeof label, "GPU timestamps, one submit (fenced: %.2f ms)", timings->frame_fenced_ms);
+        std::snprintf(label, sizeof label, "GPU timestamps, one fenced submit (%.2f ms)", timings->frame_fenced_ms);
       else
         std::snprintf(label, sizeof label, "fenced CPU timings, one submit each (%s)", timings->note.c_str());
-      pass_clock_ = label;
-      passes_.push_back({"prepare (CPU)", timings->cpu_prepare_ms});
-      for (std::size_t p = 0; p < std::size_t(gpu::FramePass::count); ++p)
-        if (timings->milliseconds[p] > 0.0) passes_.push_back({gpu::frame_pass_name(gpu::FramePass(p)), timings->milliseconds[p]});
+      show_pass_timings(*timings, label);
+      timestamps_trusted_ = timings->timestamps;
     }
     parts_.lap(FramePart::pass_timing);
   }
   return {};
+}
+
+void Viewer::show_pass_timings(const gpu::PassTimings& timings, const std::string& clock) {
+  passes_.clear();
+  pass_clock_ = clock;
+  passes_.push_back({"prepare (CPU)", timings.cpu_prepare_ms});
+  for (std::size_t p = 0; p < std::size_t(gpu::FramePass::count); ++p)
+    if (timings.milliseconds[p] > 0.0) passes_.push_back({gpu::frame_pass_name(gpu::FramePass(p)), timings.milliseconds[p]});
+  ++pass_timings_shown_;
 }
 
 Status Viewer::finish_oldest() {
@@ -196,6 +214,15 @@ Status Viewer::finish_oldest() {
   in_flight_.pop_front();
   auto finished = renderer_->finish(ticket);
   if (!finished) return finished.error();
+  if (finished->passes) {
+    if (finished->passes->timestamps) {
+      show_pass_timings(*finished->passes, "GPU timestamps in a frame shown");
+      ++in_frame_pass_timings_;
+    } else {
+      timestamps_trusted_ = false;  // back to fenced timings, which say why
+      want_pass_timing_ = true;
+    }
+  }
   return {};
 }
 
@@ -234,7 +261,7 @@ HudInfo Viewer::hud_info() const {
 
 // This frame's UI (ImGui's draw lists for a target of this size) and how it reaches the frame.
 void Viewer::build_ui(std::uint32_t width, std::uint32_t height) {
-  const bool with_ui = options_.show_ui && core_ && core_->state().toggles.ui &&
+  const bool with_ui = options_.show_ui && core_ && core_->state().toggles.ui && !ui_suppressed_ &&
                        !(!screenshots_.empty() && !screenshots_.front().with_ui);
   ImGuiIO& io = ImGui::GetIO();
   if (window_) {
@@ -317,7 +344,10 @@ Status Viewer::frame() {
   last_frame_ = now;
   ui_dt_s_ = frame_ms / 1000.0;
   // Only frames the renderer drew count (not the placeholder frames while the first scene loads).
-  if (rendered_last_) times_.add(frame_ms), adapt_resolution(frame_ms);
+  if (rendered_last_) {
+    times_.add(frame_ms), steady_times_.add(frame_ms), adapt_resolution(frame_ms);
+    if (blocks_) blocks_->add(frame_ms);
+  }
   parts_.commit(rendered_last_);
   parts_.start();
   rendered_last_ = false;
@@ -353,16 +383,9 @@ Status Viewer::frame() {
     for (const Event& event : core_->take_requests()) dispatch(event);
   parts_.lap(FramePart::events);
 
-  if (!window_) {
-    TargetImage target{offscreen_->handle(), offscreen_->view(), offscreen_->format(), offscreen_->width(),
-                       offscreen_->height()};
-    if (Status s = prepare_frame(target.width, target.height); !s) return s;
-    parts_.lap(FramePart::render);
-    build_ui(target.width, target.height);
-    if (Status s = render_into(target); !s) return s;
-    parts_.lap(FramePart::render);
-    return submit_ui(target, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
-  }
+  const FrameEnd end = blocks_ ? blocks_->next() : window_ ? FrameEnd::window : FrameEnd::offscreen;
+  ui_suppressed_ = blocks_ && end != FrameEnd::window;
+  if (end != FrameEnd::window && end != FrameEnd::window_no_ui) return measured_frame(end);
 
   int width = 0, height = 0;
   window_->framebuffer_size(width, height);
@@ -378,10 +401,18 @@ Status Viewer::frame() {
     swapchain_stale_ = false;
   }
   display_width_ = swapchain_->width(), display_height_ = swapchain_->height();
-  // The previous frame is presented only now, after this frame's CPU work: on a software
-  // swapchain vkQueuePresentKHR waits for the device to finish that frame, so the work above
-  // overlaps it. Nothing of this frame is submitted yet (the present's own submission would
-  // wait for it).
+  // This frame's image is asked for now and the previous frame presented only after this
+  // frame's CPU work: on a software swapchain vkQueuePresentKHR waits for the device to finish
+  // that frame, so the work here overlaps it. Nothing of this frame is submitted yet (the
+  // present's own submission would wait for it).
+  auto started = swapchain_->start_acquire();
+  if (!started) return started.error();
+  if (!*started) {  // out of date: rebuild next frame
+    if (Status s = present_pending(); !s) return s;
+    swapchain_stale_ = true;
+    return {};
+  }
+  parts_.lap(FramePart::acquire);
   if (Status s = prepare_frame(display_width_, display_height_); !s) return s;
   parts_.lap(FramePart::render);
   build_ui(display_width_, display_height_);
@@ -396,11 +427,53 @@ Status Viewer::frame() {
   const std::uint32_t index = (*acquired)->index;
   const TargetImage& target = swapchain_->image(index);
   parts_.lap(FramePart::acquire);
-  if (Status s = render_into(target); !s) return s;
+  if (Status s = render_into(target, FrameEnd::window); !s) return s;
   parts_.lap(FramePart::render);
   if (Status s = submit_ui(target, swapchain_->render_done(index), VK_IMAGE_LAYOUT_PRESENT_SRC_KHR); !s) return s;
   pending_present_ = PendingPresent{index, (*acquired)->stale};
   return {};
+}
+
+// A frame that is not presented: the offscreen presenter's (or, with measure blocks in a window,
+// an image of the swapchain's size and format), or read back as `bench frame` does (no UI).
+Status Viewer::measured_frame(FrameEnd end) {
+  std::uint32_t width = display_width_, height = display_height_;
+  if (window_) {
+    if (Status s = present_pending(); !s) return s;  // the window block's last frame
+    int w = 0, h = 0;
+    window_->framebuffer_size(w, h);
+    if (w == 0 || h == 0) return {};
+    width = std::uint32_t(w), height = std::uint32_t(h);
+  }
+  const gpu::Image* image = window_ ? nullptr : &*offscreen_;
+  if (window_ && end == FrameEnd::offscreen) {
+    if (!measure_image_ || measure_image_->width() != width || measure_image_->height() != height) {
+      if (Status s = finish_all(); !s) return s;
+      if (Status s = ui_pass_->wait(); !s) return s;
+      auto made = gpu::Image::create(*context_, width, height, swapchain_->format(),
+                                     VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                                         VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+      if (!made) return made.error();
+      ui_pass_->forget_framebuffers();
+      measure_image_ = std::move(*made);
+    }
+    image = &*measure_image_;
+  }
+  const TargetImage target = image ? TargetImage{image->handle(), image->view(), image->format(), image->width(), image->height()}
+                                   : TargetImage{VK_NULL_HANDLE, VK_NULL_HANDLE, VK_FORMAT_UNDEFINED, width, height};
+  if (Status s = prepare_frame(target.width, target.height); !s) return s;
+  parts_.lap(FramePart::render);
+  if (end == FrameEnd::readback) {
+    ui_with_ = false;
+    if (Status s = render_into(target, end); !s) return s;
+    parts_.lap(FramePart::render);
+    return {};
+  }
+  build_ui(target.width, target.height);
+  if (Status s = render_into(target, end); !s) return s;
+  parts_.lap(FramePart::render);
+  // The window's UI pass ends in the swapchain's layout, also on the measure image.
+  return submit_ui(target, VK_NULL_HANDLE, window_ ? VK_IMAGE_LAYOUT_PRESENT_SRC_KHR : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
 }
 
 Status Viewer::present_pending() {

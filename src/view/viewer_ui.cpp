@@ -30,6 +30,17 @@ std::vector<float> FrameTimes::ordered() const {
   return out;
 }
 
+void SteadyTimes::add(double ms) {
+  if (skipped_ < warmup_) {
+    ++skipped_;
+    return;
+  }
+  min_ = frames_ ? std::min(min_, ms) : ms;
+  max_ = frames_ ? std::max(max_, ms) : ms;
+  sum_ += ms;
+  ++frames_;
+}
+
 namespace {
 
 constexpr float kSettingsWidth = 352.0f;

@@ -33,6 +33,22 @@ class FrameTimes {
   std::size_t next_ = 0, count_ = 0;
 };
 
+// Every frame time after the first `warmup` (the state file's steady figures, comparable with
+// run::time_pipelined_frames, which times frames after warming up as many).
+class SteadyTimes {
+ public:
+  explicit SteadyTimes(int warmup) : warmup_(warmup) {}
+  void add(double ms);
+  int frames() const { return frames_; }
+  double mean() const { return frames_ ? sum_ / frames_ : 0.0; }
+  double min() const { return frames_ ? min_ : 0.0; }
+  double max() const { return frames_ ? max_ : 0.0; }
+
+ private:
+  int warmup_ = 0, skipped_ = 0, frames_ = 0;
+  double sum_ = 0.0, min_ = 0.0, max_ = 0.0;
+};
+
 struct PassTime {
   std::string name;
   double ms = 0.0;

@@ -56,6 +56,17 @@ TEST(OverlayCache, CoveringRectsAreDisjointInsideTheImageAndCoverEveryTouchedPix
   EXPECT_TRUE(covering_rects({}, width, height, tile).empty());
 }
 
+TEST(OverlayCache, RowsSpanningTheSameColumnsMergeIntoOneRect) {
+  // A panel: one rectangle, however many rows of squares it spans; a narrower bottom part stays
+  // its own rectangle (the rects stay disjoint, checked for every case above).
+  const std::vector<PixelRect> panel = {{5, 3, 100, 100}};
+  EXPECT_EQ(covering_rects(panel, 256, 256, 32), (std::vector<PixelRect>{{0, 0, 128, 128}}));
+  const std::vector<PixelRect> two = {{0, 0, 100, 64}, {0, 64, 40, 90}};
+  EXPECT_EQ(covering_rects(two, 256, 256, 32), (std::vector<PixelRect>{{0, 0, 128, 64}, {0, 64, 64, 96}}));
+  const std::vector<PixelRect> apart = {{0, 0, 30, 30}, {200, 0, 230, 90}};
+  EXPECT_EQ(covering_rects(apart, 256, 256, 32), (std::vector<PixelRect>{{0, 0, 32, 32}, {192, 0, 256, 96}}));
+}
+
 TEST(OverlayCache, BlendIsPremultipliedOver) {
   // Transparent black keeps the frame; opaque replaces it; a half-covered layer mixes.
   std::vector<std::uint8_t> frame = {200, 100, 50, 255, 200, 100, 50, 255, 200, 100, 50, 255};

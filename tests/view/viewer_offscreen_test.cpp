@@ -7,6 +7,7 @@
 #include <stb/stb_image_write.h>
 
 #include "gpu/gpu_test_context.h"
+#include "gpu/pass_timestamps.h"
 #include "scene/scene_defaults.h"
 #include "scene/scene_parse.h"
 #include "viewer_test_util.h"
@@ -214,6 +215,40 @@ TEST_F(ViewerOffscreenTest, AModelShowsBeforeItsRigFitCompletes) {
   EXPECT_GT(state["frames"], state["frames_without_proxies"]);
   EXPECT_EQ(state["validation_messages"], 0);
   EXPECT_TRUE(std::filesystem::exists(dir / "figure.proxies.json"));
+}
+
+// The HUD's pass times: one fenced timing checks the device's timestamps first; where they are
+// plausible, every later update comes from timestamps in a frame shown (here every frame: period
+// 0), so the HUD renders no frame of its own. Steady frame times skip the warm-up frames.
+TEST_F(ViewerOffscreenTest, HudPassTimesComeFromTheFramesShown) {
+  ViewerOptions options;
+  options.open = "default";
+  options.assets_dir = PROXYGI_SOURCE_DIR "/assets";
+  options.offscreen = true;
+  options.width = options.height = 64;
+  options.validation = true;
+  options.play = true;
+  options.adaptive_resolution = false;
+  options.max_frames = 12;
+  options.pass_timing_period_s = 0.0;
+  options.state_out = output_dir("hud_pass_times") / "state.json";
+  ASSERT_TRUE(run_viewer(options).ok());
+  std::ifstream in(options.state_out);
+  const auto state = nlohmann::json::parse(in, nullptr, false);
+  EXPECT_EQ(state["validation_messages"], 0);
+  EXPECT_EQ(state["frames"], 12);
+  EXPECT_EQ(state["frame_ms_steady"]["frames"], 12 - 1 - int(state["frame_ms_steady"]["warmup_frames"]))
+      << "every frame after the warm-up, less the last (its time ends with the next frame)";
+  EXPECT_GT(state["frame_ms_steady"]["mean"], 0.0);
+  const int shown = state["pass_timings_shown"], in_frame = state["in_frame_pass_timings"];
+  if (gpu::timestamps_unusable(context()).empty()) {
+    // Frame 1 is timed fenced; frames 2 .. 10 in the frame (11 and 12 are still in flight at the end).
+    EXPECT_EQ(in_frame, 9);
+    EXPECT_EQ(shown, in_frame + 1);
+  } else {
+    EXPECT_EQ(in_frame, 0);
+    EXPECT_GE(shown, 1);
+  }
 }
 
 }  // namespace
