@@ -92,11 +92,15 @@ void draw_hud(UiContext& ui, UiRequests& requests) {
     ImGui::TextUnformatted(hud.quality.c_str());
     for (const std::string& reason : hud.quality_reasons) ImGui::Text("  %s", reason.c_str());
   }
-  if (!hud.passes.empty()) {
-    ImGui::Text("passes (%s):", hud.pass_clock.c_str());
-    for (const PassTime& pass : hud.passes) ImGui::Text("  %-20s %7.2f ms", pass.name.c_str(), pass.ms);
+  // Closed by default: the HUD stays small (on a CPU device every pixel the UI covers is blended
+  // over each frame); the times keep being measured while it is closed.
+  if (ImGui::CollapsingHeader("pass times")) {
+    if (!hud.passes.empty()) {
+      ImGui::Text("%s:", hud.pass_clock.c_str());
+      for (const PassTime& pass : hud.passes) ImGui::Text("  %-20s %7.2f ms", pass.name.c_str(), pass.ms);
+    }
+    if (ImGui::SmallButton("time passes")) requests.time_passes = true;
   }
-  if (ImGui::SmallButton("time passes")) requests.time_passes = true;
   ImGui::End();
 }
 

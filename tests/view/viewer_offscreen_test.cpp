@@ -251,5 +251,29 @@ TEST_F(ViewerOffscreenTest, HudPassTimesComeFromTheFramesShown) {
   }
 }
 
+// --measure-blocks without a window: offscreen and readback blocks alternate (validation on).
+TEST_F(ViewerOffscreenTest, MeasureBlocksAlternateOffscreenAndReadback) {
+  ViewerOptions options;
+  options.open = "default";
+  options.assets_dir = PROXYGI_SOURCE_DIR "/assets";
+  options.offscreen = true;
+  options.width = options.height = 64;
+  options.validation = true;
+  options.play = true;
+  options.adaptive_resolution = false;
+  options.measure_block_frames = 3;
+  options.max_frames = 2 * 2 * 3 + 1;
+  options.state_out = output_dir("measure_blocks") / "state.json";
+  ASSERT_TRUE(run_viewer(options).ok());
+  std::ifstream in(options.state_out);
+  const auto state = nlohmann::json::parse(in, nullptr, false);
+  EXPECT_EQ(state["validation_messages"], 0);
+  const auto& blocks = state["measure_blocks_ms"];
+  EXPECT_TRUE(blocks["window"].empty());
+  EXPECT_TRUE(blocks["window_no_ui"].empty());
+  EXPECT_EQ(blocks["offscreen"].size(), 2u);
+  EXPECT_EQ(blocks["readback"].size(), 2u);
+}
+
 }  // namespace
 }  // namespace proxygi::view

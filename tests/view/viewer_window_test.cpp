@@ -116,5 +116,30 @@ TEST_F(ViewerWindowTest, ScreenshotOfTheWindowWithItsUi) {
   write_shot(shot, shot.rgba, output_dir("window_readme") / "viewer.png");
 }
 
+// --measure-blocks in a real window: blocks cycle through the window with and without the UI,
+// an offscreen image of the swapchain's format and readback, with zero validation messages.
+TEST_F(ViewerWindowTest, MeasureBlocksCycleThroughEveryFrameEnding) {
+  ViewerOptions options;
+  options.open = "default";
+  options.assets_dir = PROXYGI_SOURCE_DIR "/assets";
+  options.width = options.height = kSize;
+  options.validation = true;
+  options.play = true;
+  options.adaptive_resolution = false;
+  options.measure_block_frames = 3;
+  options.max_frames = 2 * 4 * 3 + 1;  // two whole cycles; the last frame's time is never taken
+  options.state_out = output_dir("window_measure_blocks") / "state.json";
+  ASSERT_TRUE(run_viewer(options).ok());
+  std::ifstream in(options.state_out);
+  const auto state = nlohmann::json::parse(in, nullptr, false);
+  EXPECT_EQ(state["validation_messages"], 0);
+  const auto& blocks = state["measure_blocks_ms"];
+  EXPECT_EQ(blocks["block_frames"], 3);
+  for (const char* end : {"window", "window_no_ui", "offscreen", "readback"}) {
+    ASSERT_EQ(blocks[end].size(), 2u) << end;
+    for (double ms : blocks[end]) EXPECT_GT(ms, 0.0) << end;
+  }
+}
+
 }  // namespace
 }  // namespace proxygi::view
