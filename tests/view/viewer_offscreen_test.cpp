@@ -221,20 +221,9 @@ TEST_F(ViewerOffscreenTest, AModelShowsBeforeItsRigFitCompletes) {
 // plausible, every later update comes from timestamps in a frame shown (here every frame: period
 // 0), so the HUD renders no frame of its own. Steady frame times skip the warm-up frames.
 TEST_F(ViewerOffscreenTest, HudPassTimesComeFromTheFramesShown) {
-  ViewerOptions options;
-  options.open = "default";
-  options.assets_dir = PROXYGI_SOURCE_DIR "/assets";
-  options.offscreen = true;
-  options.width = options.height = 64;
-  options.validation = true;
-  options.play = true;
-  options.adaptive_resolution = false;
-  options.max_frames = 12;
+  ViewerOptions options = playing_options("hud_pass_times", true, 64, 12);
   options.pass_timing_period_s = 0.0;
-  options.state_out = output_dir("hud_pass_times") / "state.json";
-  ASSERT_TRUE(run_viewer(options).ok());
-  std::ifstream in(options.state_out);
-  const auto state = nlohmann::json::parse(in, nullptr, false);
+  const auto state = run_for_state(options);
   EXPECT_EQ(state["validation_messages"], 0);
   EXPECT_EQ(state["frames"], 12);
   EXPECT_EQ(state["frame_ms_steady"]["frames"], 12 - 1 - int(state["frame_ms_steady"]["warmup_frames"]))
@@ -253,20 +242,9 @@ TEST_F(ViewerOffscreenTest, HudPassTimesComeFromTheFramesShown) {
 
 // --measure-blocks without a window: offscreen and readback blocks alternate (validation on).
 TEST_F(ViewerOffscreenTest, MeasureBlocksAlternateOffscreenAndReadback) {
-  ViewerOptions options;
-  options.open = "default";
-  options.assets_dir = PROXYGI_SOURCE_DIR "/assets";
-  options.offscreen = true;
-  options.width = options.height = 64;
-  options.validation = true;
-  options.play = true;
-  options.adaptive_resolution = false;
+  ViewerOptions options = playing_options("measure_blocks", true, 64, 2 * 2 * 3 + 1);
   options.measure_block_frames = 3;
-  options.max_frames = 2 * 2 * 3 + 1;
-  options.state_out = output_dir("measure_blocks") / "state.json";
-  ASSERT_TRUE(run_viewer(options).ok());
-  std::ifstream in(options.state_out);
-  const auto state = nlohmann::json::parse(in, nullptr, false);
+  const auto state = run_for_state(options);
   EXPECT_EQ(state["validation_messages"], 0);
   const auto& blocks = state["measure_blocks_ms"];
   EXPECT_TRUE(blocks["window"].empty());

@@ -65,6 +65,30 @@ inline ViewerRun run_viewer_script(const std::string& script_json, const std::st
   return run;
 }
 
+// A run without a script: the default scene playing for `max_frames` frames at size², validation
+// on, the adaptive resolution off, the state file in the test's output folder.
+inline ViewerOptions playing_options(const std::string& test, bool offscreen, int size, int max_frames) {
+  ViewerOptions options;
+  options.open = "default";
+  options.assets_dir = PROXYGI_SOURCE_DIR "/assets";
+  options.offscreen = offscreen;
+  options.width = options.height = size;
+  options.validation = true;
+  options.play = true;
+  options.adaptive_resolution = false;
+  options.max_frames = max_frames;
+  options.state_out = output_dir(test) / "state.json";
+  return options;
+}
+
+// Runs the viewer (expecting success) and reads its state file (discarded JSON when absent).
+inline nlohmann::json run_for_state(const ViewerOptions& options) {
+  const Status status = view::run_viewer(options);
+  EXPECT_TRUE(status.ok()) << status.message();
+  std::ifstream in(options.state_out);
+  return nlohmann::json::parse(in, nullptr, false);
+}
+
 // The largest per-channel difference of two RGBA8 images (255 when sizes differ).
 inline int max_code_difference(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {
   if (a.size() != b.size()) return 255;

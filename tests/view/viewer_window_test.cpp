@@ -119,19 +119,10 @@ TEST_F(ViewerWindowTest, ScreenshotOfTheWindowWithItsUi) {
 // --measure-blocks in a real window: blocks cycle through the window with and without the UI,
 // an offscreen image of the swapchain's format and readback, with zero validation messages.
 TEST_F(ViewerWindowTest, MeasureBlocksCycleThroughEveryFrameEnding) {
-  ViewerOptions options;
-  options.open = "default";
-  options.assets_dir = PROXYGI_SOURCE_DIR "/assets";
-  options.width = options.height = kSize;
-  options.validation = true;
-  options.play = true;
-  options.adaptive_resolution = false;
+  // Two whole cycles; the last frame's time is never taken.
+  ViewerOptions options = playing_options("window_measure_blocks", false, kSize, 2 * 4 * 3 + 1);
   options.measure_block_frames = 3;
-  options.max_frames = 2 * 4 * 3 + 1;  // two whole cycles; the last frame's time is never taken
-  options.state_out = output_dir("window_measure_blocks") / "state.json";
-  ASSERT_TRUE(run_viewer(options).ok());
-  std::ifstream in(options.state_out);
-  const auto state = nlohmann::json::parse(in, nullptr, false);
+  const auto state = run_for_state(options);
   EXPECT_EQ(state["validation_messages"], 0);
   const auto& blocks = state["measure_blocks_ms"];
   EXPECT_EQ(blocks["block_frames"], 3);
