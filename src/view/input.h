@@ -56,6 +56,12 @@ struct ResizeEvent {
   int width = 0, height = 0;  // 0 × 0: minimize; negative: restore
 };
 
+// Moves the window's top-left corner to (x, y) in desktop coordinates (across screens or
+// monitors: the swapchain follows the framebuffer size wherever the window lands).
+struct MoveEvent {
+  int x = 0, y = 0;
+};
+
 // Writes the viewer's state as a scene file `record` runs (see viewer_app.h).
 struct SaveSceneEvent {
   std::string path;
@@ -64,7 +70,7 @@ struct SaveSceneEvent {
 struct QuitEvent {};
 
 using Event = std::variant<KeyEvent, DragEvent, ScrollEvent, SetSettingEvent, OpenFileEvent, ScreenshotEvent,
-                           ResizeEvent, SaveSceneEvent, QuitEvent>;
+                           ResizeEvent, MoveEvent, SaveSceneEvent, QuitEvent>;
 
 // "space", "left", "f12", ...: the names scripts use.
 std::optional<Key> key_from_name(std::string_view name);

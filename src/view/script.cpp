@@ -85,6 +85,11 @@ Status parse_event(const json& item, std::vector<TimedEvent>& out) {
         size[0].get<int>() < 1 || size[1].get<int>() < 1)
       return make_error("resize: expected [width, height] in pixels");
     add(ResizeEvent{size[0].get<int>(), size[1].get<int>()});
+  } else if (item.contains("move")) {
+    const json& at = item["move"];
+    if (!at.is_array() || at.size() != 2 || !at[0].is_number_integer() || !at[1].is_number_integer())
+      return make_error("move: expected [x, y], the window's top-left in desktop pixels");
+    add(MoveEvent{at[0].get<int>(), at[1].get<int>()});
   } else if (item.contains("minimize")) {
     add(ResizeEvent{0, 0});
   } else if (item.contains("restore")) {
@@ -93,7 +98,7 @@ Status parse_event(const json& item, std::vector<TimedEvent>& out) {
     if (item["quit"] != true) return make_error("quit: expected true");
     add(QuitEvent{});
   } else {
-    return make_error("expected one of key, drag, scroll, set, screenshot, open, save, resize, minimize, restore, quit");
+    return make_error("expected one of key, drag, scroll, set, screenshot, open, save, resize, move, minimize, restore, quit");
   }
   return {};
 }

@@ -11,6 +11,7 @@
 //      {"t": 1.5, "screenshot": "out/a.png", "ui": false},
 //      {"t": 2.0, "open": "model.glb"}, {"t": 2.0, "save": "out/seen.json"},
 //      {"t": 2.5, "resize": [320, 200]}, {"t": 3, "minimize": true}, {"t": 3.5, "restore": true},
+//      {"t": 3.7, "move": [1400, 100]},          // the window's top-left (another screen)
 //      {"t": 4.0, "quit": true}]}
 //
 // Script time advances by step_s per rendered frame and stands still while a scene loads or

@@ -175,6 +175,8 @@ void Viewer::dispatch(const Event& event) {
     screenshots_.push_back(*shot);
   } else if (const auto* save = std::get_if<SaveSceneEvent>(&event)) {
     if (Status s = save_scene(save->path); !s) core_->state().message = s.message();
+  } else if (const auto* move = std::get_if<MoveEvent>(&event)) {
+    if (window_) window_->move(move->x, move->y);
   } else if (const auto* resize = std::get_if<ResizeEvent>(&event)) {
     if (window_) {
       window_->resize(resize->width, resize->height);

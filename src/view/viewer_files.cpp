@@ -120,6 +120,12 @@ Status Viewer::write_state() const {
   json["display"] = {display_width_, display_height_};
   json["internal"] = {internal_width_, internal_height_};
   json["swapchain_recreations"] = swapchain_ ? swapchain_->recreations() : 0;
+  if (window_) {
+    int x = 0, y = 0;
+    window_->position(x, y);
+    json["window_position"] = {x, y};
+    json["monitors"] = Window::monitor_count();
+  }
   json["validation_messages"] = context_ ? context_->validation_message_count() : 0;
   json["toggles"] = {{"ui", state.toggles.ui}, {"hud", state.toggles.hud}, {"help", state.toggles.help},
                      {"bones", state.toggles.bones}, {"proxies", state.toggles.proxies}, {"grid", state.toggles.grid},

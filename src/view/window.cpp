@@ -159,6 +159,14 @@ void Window::resize(int width, int height) {
   else glfwSetWindowSize(window_, width, height);
 }
 
+void Window::move(int x, int y) { glfwSetWindowPos(window_, x, y); }
+void Window::position(int& x, int& y) const { glfwGetWindowPos(window_, &x, &y); }
+int Window::monitor_count() {
+  int count = 0;
+  glfwGetMonitors(&count);
+  return count;
+}
+
 void Window::on_key(GLFWwindow* window, int key, int, int action, int mods) {
   if (action == GLFW_RELEASE) return;
   Window* me = self(window);

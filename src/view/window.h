@@ -46,6 +46,11 @@ class Window {
   void framebuffer_size(int& width, int& height) const;
   void set_title(const std::string& title);
   void resize(int width, int height);  // ResizeEvent: 0 × 0 minimizes, negative restores
+  void move(int x, int y);             // MoveEvent
+  // Where the window is (asks the server: for the state file, not per frame) and the monitors
+  // GLFW reports.
+  void position(int& x, int& y) const;
+  static int monitor_count();
   GLFWwindow* handle() const { return window_; }
 
  private:

@@ -156,10 +156,14 @@ TEST(ViewerScript, ParsesEveryEventKindAndNamesTheBadOne) {
       {"t": 0.5, "set": {"sh_order": 5, "tonemap": "reinhard", "indirect_method": "none"}},
       {"t": 0.6, "screenshot": "a.png", "ui": false},
       {"t": 0.6, "open": "m.glb"}, {"t": 0.6, "save": "s.json"},
-      {"t": 0.7, "resize": [64, 32]}, {"t": 0.8, "minimize": true}, {"t": 0.9, "restore": true}]})");
+      {"t": 0.7, "resize": [64, 32]}, {"t": 0.8, "minimize": true}, {"t": 0.9, "restore": true},
+      {"t": 0.95, "move": [-20, 900]}]})");
   ASSERT_TRUE(script.ok()) << script.message();
   EXPECT_EQ(*script->step_s, 0.05);
-  ASSERT_EQ(script->events.size(), 13u);
+  ASSERT_EQ(script->events.size(), 14u);
+  const auto& move = std::get<MoveEvent>(script->events[12].event);
+  EXPECT_EQ(move.x, -20);
+  EXPECT_EQ(move.y, 900);
   EXPECT_TRUE(std::holds_alternative<KeyEvent>(script->events[0].event));
   EXPECT_TRUE(std::get<KeyEvent>(script->events[0].event).mods.shift);
   EXPECT_TRUE(std::holds_alternative<QuitEvent>(script->events.back().event));  // sorted by time
@@ -174,7 +178,7 @@ TEST(ViewerScript, ParsesEveryEventKindAndNamesTheBadOne) {
   EXPECT_FALSE(player.finished());
   EXPECT_EQ(player.due(10.0).size(), 1u);  // up to the screenshot
   EXPECT_TRUE(player.has_due(10.0));
-  EXPECT_EQ(player.due(10.0).size(), 6u);
+  EXPECT_EQ(player.due(10.0).size(), 7u);
   EXPECT_TRUE(player.finished());
 
   auto bad = parse_script(R"({"events": [{"t": 0, "key": "space"}, {"t": 1, "key": "spce"}]})");
@@ -183,6 +187,9 @@ TEST(ViewerScript, ParsesEveryEventKindAndNamesTheBadOne) {
   EXPECT_NE(bad.message().find("spce"), std::string::npos) << bad.message();
   EXPECT_FALSE(parse_script(R"({"events": [{"t": 0, "set": {"sh_ordr": 5}}]})").ok());
   EXPECT_FALSE(parse_script("[1, 2]").ok());
+  auto bad_move = parse_script(R"({"events": [{"t": 0, "move": [1]}]})");
+  ASSERT_FALSE(bad_move.ok());
+  EXPECT_NE(bad_move.message().find("move"), std::string::npos) << bad_move.message();
 }
 
 // shadow_eta "auto" in a script's set event (as in scene files); 0, its stored form, is refused

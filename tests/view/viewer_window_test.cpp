@@ -132,5 +132,26 @@ TEST_F(ViewerWindowTest, MeasureBlocksCycleThroughEveryFrameEnding) {
   }
 }
 
+// A window moved across the desktop mid-playback (as a move onto another monitor of a RandR
+// desktop is: one X screen, the window elsewhere on it) keeps rendering, then paused and sent to
+// frame 0 it equals record's frame; zero validation messages. Xvfb's RandR has one output, so
+// GLFW sees one monitor: a change of content scale or refresh rate between real monitors is not
+// exercised (a content-scale change reaches the viewer as a framebuffer resize, tested above).
+TEST_F(ViewerWindowTest, MovingTheWindowMidPlaybackKeepsRendering) {
+  const auto run = run_viewer_script(R"({"events": [
+      {"t": 0, "key": "space"}, {"t": 0, "move": [0, 0]}, {"t": 0.1, "screenshot": "first.png"},
+      {"t": 0.2, "move": [900, 600]}, {"t": 0.4, "screenshot": "moved.png"},
+      {"t": 0.6, "key": "space"}, {"t": 0.6, "key": "left", "shift": true},
+      {"t": 0.65, "screenshot": "back.png", "ui": false}]})",
+                                     "default", kSize, kSize, false, "window_move");
+  ASSERT_TRUE(run.status.ok()) << run.status.message();  // includes: zero validation messages
+  EXPECT_EQ(run.state["window_position"], nlohmann::json::array({900, 600}));
+  EXPECT_GE(run.state["monitors"].get<int>(), 1);
+  EXPECT_EQ(run.shots.at("moved.png").width, kSize);
+  EXPECT_FALSE(run.state["playing"]);
+  expect_within_one_code(run.shots.at("back.png"), record_frame(context(), scene::default_scene(), kSize, kSize, 0),
+                         "window_move", "back");
+}
+
 }  // namespace
 }  // namespace proxygi::view
