@@ -78,8 +78,8 @@ void add_view_command(CLI::App& app, CommandRunner& runner) {
   command->add_option("--max-frames", args->max_frames, "quit after N frames")->check(CLI::NonNegativeNumber);
   command->add_option("--state-out", args->state_out, "write the final viewer state as JSON (tests)");
   command->add_option("--measure-blocks", args->measure_blocks,
-                      "measurement: blocks of N frames cycle through window (UI, present), offscreen (no UI) and "
-                      "readback (as bench frame) endings; block means in the --state-out file")
+                      "measurement: blocks of N frames cycle through window (UI, present), window without UI, "
+                      "offscreen (no UI) and readback (as bench frame) endings; block means in the --state-out file")
       ->check(CLI::Range(view::MeasureBlocks::kWarmupFrames + 1, 100000));
   add_quiet_flag(*command);
   add_device_option(*command, args->device);

@@ -43,7 +43,6 @@ class TimestampQueries {
   // 0: all), after the submission completed; the valid-bit mask and period applied. Only
   // timestamps written since the last reset may be read (an unwritten one never becomes ready).
   Result<std::vector<double>> intervals_ms(std::uint32_t written = 0) const;
-  std::uint32_t count() const { return count_; }
 
  private:
   VkDevice device_ = VK_NULL_HANDLE;

@@ -23,9 +23,7 @@ std::vector<PixelRect> covering_rects(std::span<const PixelRect> touched, int wi
       for (int column = clamped.x0 / tile; column <= (clamped.x1 - 1) / tile; ++column)
         marked[std::size_t(row) * std::size_t(columns) + std::size_t(column)] = 1;
   }
-  std::size_t previous_row = 0;  // rects[previous_row ..] ended at the row above
   for (int row = 0; row < rows; ++row) {
-    const std::size_t this_row = rects.size();
     for (int column = 0; column < columns;) {
       if (!marked[std::size_t(row) * std::size_t(columns) + std::size_t(column)]) {
         ++column;
@@ -34,20 +32,14 @@ std::vector<PixelRect> covering_rects(std::span<const PixelRect> touched, int wi
       const int first = column;
       while (column < columns && marked[std::size_t(row) * std::size_t(columns) + std::size_t(column)]) ++column;
       const PixelRect run{first * tile, row * tile, std::min(column * tile, width), std::min((row + 1) * tile, height)};
-      // A run spanning the same columns as one of the row above extends it (fewer, taller rects:
-      // each is a draw of its own).
-      bool extended = false;
-      for (std::size_t r = previous_row; r < this_row && !extended; ++r)
-        if (rects[r].x0 == run.x0 && rects[r].x1 == run.x1 && rects[r].y1 == run.y0) rects[r].y1 = run.y1, extended = true;
-      if (!extended) rects.push_back(run);
+      // A run spanning the same columns as a rect ending at the row above extends it (fewer,
+      // taller rects: each is a draw of its own).
+      const auto above = std::find_if(rects.begin(), rects.end(), [&](const PixelRect& r) {
+        return r.x0 == run.x0 && r.x1 == run.x1 && r.y1 == run.y0;
+      });
+      if (above != rects.end()) above->y1 = run.y1;
+      else rects.push_back(run);
     }
-    // Rects extended into this row stay open for the next one, with those it started.
-    std::vector<PixelRect> open, closed;
-    for (std::size_t r = previous_row; r < rects.size(); ++r) (rects[r].y1 == std::min((row + 1) * tile, height) ? open : closed).push_back(rects[r]);
-    rects.resize(previous_row);
-    rects.insert(rects.end(), closed.begin(), closed.end());
-    previous_row = rects.size();
-    rects.insert(rects.end(), open.begin(), open.end());
   }
   return rects;
 }

@@ -32,13 +32,14 @@ void Swapchain::destroy_images() {
   render_done_.clear();
 }
 
-Status Swapchain::drop_started() {
-  if (!started_) return {};
+Status Swapchain::wait_for_started() {
   started_.reset();
   PROXYGI_VK_TRY(vkWaitForFences(context_.device(), 1, &acquire_fence_, VK_TRUE, UINT64_MAX));
   PROXYGI_VK_TRY(vkResetFences(context_.device(), 1, &acquire_fence_));
   return {};
 }
+
+Status Swapchain::drop_started() { return started_ ? wait_for_started() : Status{}; }
 
 Status Swapchain::recreate(std::uint32_t width, std::uint32_t height) {
   if (Status s = drop_started(); !s) return s;
@@ -149,9 +150,7 @@ Result<std::optional<Swapchain::Acquired>> Swapchain::acquire() {
   if (!started) return started.error();
   if (!*started) return std::optional<Acquired>();
   const Acquired acquired = *started_;
-  started_.reset();
-  PROXYGI_VK_TRY(vkWaitForFences(context_.device(), 1, &acquire_fence_, VK_TRUE, UINT64_MAX));
-  PROXYGI_VK_TRY(vkResetFences(context_.device(), 1, &acquire_fence_));
+  if (Status s = wait_for_started(); !s) return s.error();
   return std::optional<Acquired>(acquired);
 }
 

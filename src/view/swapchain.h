@@ -72,7 +72,8 @@ class Swapchain {
   std::vector<VkSemaphore> render_done_;
   VkFence acquire_fence_ = VK_NULL_HANDLE;
   std::optional<Acquired> started_;  // start_acquire's image, its fence not yet waited for
-  Status drop_started();             // waits for it and forgets it (before a rebuild)
+  Status wait_for_started();         // waits for its fence and forgets it
+  Status drop_started();             // the same when there is one (before a rebuild)
   int recreations_ = 0;
 };
 
