@@ -1,7 +1,8 @@
 // proxygi bench stability [--json] [--sweeps S1,S2,...] [--quick] [--out DIR] [--cache DIR]
-//   [--chart-csv FILE]
+//   [--chart-csv FILE] [--no-gpu] [--device NAME]
 // The stability study (study/stability_sweeps.h, ../shared/notes/stability.md): each stress sweep
-// on the frame's CPU twins scored against the exact answer, with its thresholds and pass/fail.
+// on the frame's CPU twins scored against the exact answer, with its thresholds and pass/fail;
+// S6 also on the GPU frame (shadow gather and raster splat) unless --no-gpu.
 // Writes DIR/bench-stability.json and .md, a chart per sweep (threshold lines) and the
 // robustness–speed chart; prints a summary (or the JSON with --json). Exit 0 whether or not points
 // fail (the study reports them), 1 when a sweep cannot run or a file cannot be written, 2 on bad
@@ -10,6 +11,7 @@
 
 #include "apps/bench_stability_report.h"
 #include "apps/commands.h"
+#include "run/gpu_receiver_shader.h"
 #include "settings/limits.h"
 
 namespace proxygi::app {
@@ -23,6 +25,8 @@ struct StabilityArgs {
   std::string cache = "out/chart-cache";
   std::string chart_csv;  // empty: the committed docs/bench-chart.csv beside assets/
   int noise_size = 96;
+  bool no_gpu = false;
+  std::string device;
 };
 
 int run_bench_stability(const StabilityArgs& args) {
@@ -48,12 +52,31 @@ int run_bench_stability(const StabilityArgs& args) {
   std::error_code error;
   std::filesystem::create_directories(options.cache_dir, error);
   if (error) return fail_runtime(args.cache + ": cannot create: " + error.message());
+  // The GPU frame for the sweeps that run it (S6); with PROXYGI_VALIDATION=1 (the tests) any
+  // validation message fails the run.
+  std::unique_ptr<gpu::Context> context;
+  std::unique_ptr<study::GpuReceiverShader> gpu_shader;
+  if (!args.no_gpu && std::find(ids.begin(), ids.end(), "S6") != ids.end()) {
+    auto created = gpu::Context::create({.device_request = args.device});
+    if (!created) return fail_runtime("bench stability: " + created.message() + " (--no-gpu runs the CPU twins alone)");
+    context = std::move(*created);
+    auto shader = run::make_gpu_receiver_shader(*context);
+    if (!shader) return fail_runtime("bench stability: " + shader.message());
+    gpu_shader = std::move(*shader);
+    options.gpu = gpu_shader.get();
+  }
   std::vector<study::SweepResult> sweeps;
   for (const std::string& id : ids) {
     if (!args.json && !quiet()) std::fprintf(stderr, "bench stability: %s ...\n", id.c_str());
     auto sweep = study::run_stability_sweep(id, options);
     if (!sweep) return fail_runtime("bench stability: " + sweep.message());
     sweeps.push_back(std::move(*sweep));
+  }
+  if (context) {
+    if (const std::vector<std::string> messages = context->validation_messages(); !messages.empty()) {
+      for (const std::string& message : messages) std::fprintf(stderr, "validation: %s\n", message.c_str());
+      return fail_runtime("bench stability: " + std::to_string(messages.size()) + " Vulkan validation messages");
+    }
   }
   if (Status written = write_stability_report(args.out, sweeps, timings); !written)
     return fail_runtime("bench stability: " + written.message());
@@ -79,6 +102,8 @@ void add_bench_stability_command(CLI::App& bench, CommandRunner& runner) {
   command->add_option("--noise-size", args->noise_size, "S10: square image size in pixels")
       ->check(CLI::Range(settings::kMinImageSize, settings::kMaxImageSize))
       ->capture_default_str();
+  command->add_flag("--no-gpu", args->no_gpu, "Run the sweeps on the CPU twins alone (S6 skips the GPU frame's gather and splat)");
+  command->add_option("--device", args->device, "Vulkan device for the GPU frame (name substring or index; default: $PROXYGI_DEVICE)");
   add_quiet_flag(*command);
   command->callback([&runner, args] { runner = [args] { return run_bench_stability(*args); }; });
 }

@@ -125,7 +125,7 @@ fig.tight_layout()
 fig.savefig(sys.argv[1], dpi=100, format="png")
 )PY";
 
-// Per-frame traces, one panel per quantity; argv[1] = PNG.
+// Traces (per frame, or S5's error against pole width / k), one panel per quantity; argv[1] = PNG.
 constexpr const char* kTraceChart = R"PY(
 import json, sys
 import matplotlib
@@ -141,7 +141,9 @@ for i, panel in enumerate(panels):
     ax = axes[0][i]
     for t in data["traces"]:
         if t["panel"] == panel:
-            ax.plot(t["x"], t["y"], linewidth=1, label=t["series"])
+            ax.plot(t["x"], t["y"], linewidth=1, label=t["series"], marker="." if len(t["x"]) < 20 else None)
+    if data.get("log_x"):
+        ax.set_xscale("log", base=2)
     ax.set_xlabel(data["x_label"], fontsize=8)
     ax.set_ylabel(panel, fontsize=8)
     ax.grid(True, alpha=0.3)
@@ -175,7 +177,7 @@ fig.savefig(sys.argv[1], dpi=100, format="png")
 )PY";
 
 nlohmann::json traces_json(const study::SweepResult& sweep) {
-  nlohmann::json json = {{"id", sweep.id}, {"title", sweep.title}, {"x_label", sweep.trace_x_label}};
+  nlohmann::json json = {{"id", sweep.id}, {"title", sweep.title}, {"x_label", sweep.trace_x_label}, {"log_x", sweep.trace_log_x}};
   json["traces"] = nlohmann::json::array();
   for (const study::SweepTrace& t : sweep.traces) {
     nlohmann::json ys = nlohmann::json::array();
@@ -276,7 +278,7 @@ std::string stability_markdown(const std::vector<study::SweepResult>& sweeps) {
       md << "\nFrame outputs: " << b.pixels << ", negative " << b.negative << ", above unshadowed + 1u " << b.over_unshadowed
          << ", NaN/Inf " << b.non_finite << ".\n";
     for (const std::string& note : sweep.notes) md << "- " << note << "\n";
-    if (!sweep.traces.empty()) md << "- per-frame traces: stability-" << sweep.id << "-traces.png\n";
+    if (!sweep.traces.empty()) md << "- traces: stability-" << sweep.id << "-traces.png\n";
     if (!sweep.heat_maps.empty()) md << "- error at each method's worst point: stability-" << sweep.id << "-heatmaps.png\n";
     md << "\n";
   }

@@ -193,33 +193,39 @@ UpsampleFootprint upsample_footprint(int x, int y, int k, glm::ivec2 receivers) 
 
 glm::vec3 upsample(std::span<const UpsampleTap, 4> taps, const glm::vec3& position, float depth, const glm::vec3& normal,
                    settings::Upsampling mode, float depth_epsilon) {
+  return upsample_with_match(taps, position, depth, normal, mode, depth_epsilon).value;
+}
+
+Upsampled upsample_with_match(std::span<const UpsampleTap, 4> taps, const glm::vec3& position, float depth, const glm::vec3& normal,
+                              settings::Upsampling mode, float depth_epsilon) {
   glm::vec3 total(0.0f), fallback_total(0.0f);
-  float weight_sum = 0.0f, bilinear_sum = 0.0f, fallback_sum = 0.0f;
+  float weight_sum = 0.0f, bilinear_sum = 0.0f, fallback_sum = 0.0f, best_match = 0.0f;
   for (const auto& tap : taps) {
     if (tap.depth <= 0.0f) continue;
-    float weight = tap.bilinear_weight;
+    float factor = 1.0f;  // eq. 11's factor on w^b
     bilinear_sum += tap.bilinear_weight;
     if (mode == settings::Upsampling::bilateral) {
       // F8: the tap's distance to this pixel's tangent plane over its eye depth, so a plane seen
       // at any angle and distance weighs its taps bilinearly (scale-invariant; ε dimensionless).
       const float gap = std::abs(glm::dot(normal, tap.position - position)) / depth;
       const float near_plane = depth_epsilon / (depth_epsilon + gap);
-      fallback_total += weight * near_plane * tap.value;
-      fallback_sum += weight * near_plane;
+      fallback_total += tap.bilinear_weight * near_plane * tap.value;
+      fallback_sum += tap.bilinear_weight * near_plane;
       const float facing = std::max(glm::dot(normal, tap.normal), 0.0f);
-      weight *= std::pow(facing, 32.0f) * near_plane;
+      factor = std::pow(facing, 32.0f) * near_plane;
     }
-    total += weight * tap.value;
-    weight_sum += weight;
+    best_match = std::max(best_match, factor);
+    total += tap.bilinear_weight * factor * tap.value;
+    weight_sum += tap.bilinear_weight * factor;
   }
-  if (weight_sum > 1e-6f * std::max(bilinear_sum, 1e-30f)) return total / weight_sum;
+  if (weight_sum > 1e-6f * std::max(bilinear_sum, 1e-30f)) return {total / weight_sum, best_match};
   // Fallback: interpolate by bilinear × tangent-plane weight alone (the normals disagree).
-  if (fallback_sum > 0.0f) return fallback_total / fallback_sum;
+  if (fallback_sum > 0.0f) return {fallback_total / fallback_sum, best_match};
   // No weight at all (taps with bilinear weight 0): the valid tap nearest in depth.
   const UpsampleTap* nearest = nullptr;
   for (const auto& tap : taps)
     if (tap.depth > 0.0f && (!nearest || std::abs(tap.depth - depth) < std::abs(nearest->depth - depth))) nearest = &tap;
-  return nearest ? nearest->value : glm::vec3(0.0f);
+  return {nearest ? nearest->value : glm::vec3(0.0f), best_match};
 }
 
 glm::vec3 tonemap(const glm::vec3& radiance, float exposure, settings::Tonemap curve) {

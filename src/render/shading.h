@@ -107,6 +107,17 @@ UpsampleFootprint upsample_footprint(int x, int y, int k, glm::ivec2 receivers);
 // to the valid tap with the closest depth.
 glm::vec3 upsample(std::span<const UpsampleTap, 4> taps, const glm::vec3& position, float depth, const glm::vec3& normal,
                    settings::Upsampling mode, float depth_epsilon);
+// The same, also saying how well the best tap matches the pixel's surface: the largest eq. 11
+// factor max(N·N_i, 0)^32 · ε/(ε + |N·(P_i − P)|/z) over the taps with a receiver (bilateral;
+// 1 for bilinear, 0 with no receiver). The stability study counts pixels whose best factor is
+// under kUpsampleMatchFactor as "no-match" (notes F8/F9: the value comes from other surfaces).
+inline constexpr float kUpsampleMatchFactor = 0.5f;
+struct Upsampled {
+  glm::vec3 value{0.0f};
+  float best_match = 1.0f;
+};
+Upsampled upsample_with_match(std::span<const UpsampleTap, 4> taps, const glm::vec3& position, float depth, const glm::vec3& normal,
+                              settings::Upsampling mode, float depth_epsilon);
 
 // Linear radiance × exposure → display-referred linear [0, 1] (before the sRGB encoding).
 glm::vec3 tonemap(const glm::vec3& radiance, float exposure, settings::Tonemap curve);

@@ -25,9 +25,76 @@ Basis camera_basis(const SweepCamera& camera) {
 }  // namespace
 
 SweepGBuffer trace_gbuffer(std::span<const render::Sphere> spheres, const SweepCamera& camera, int size) {
+  return trace_gbuffer(SweepGeometry{{spheres.begin(), spheres.end()}, {}, {}}, camera, size);
+}
+
+namespace {
+
+// The nearest hit so far along one ray.
+struct Hit {
+  float t = INFINITY;
+  int label = -1;
+  glm::vec3 normal{0.0f, 1.0f, 0.0f};
+  void take(float candidate, int candidate_label, const glm::vec3& candidate_normal) {
+    if (candidate > 0.0f && candidate < t) t = candidate, label = candidate_label, normal = candidate_normal;
+  }
+};
+
+void hit_sphere(Hit& hit, const glm::vec3& eye, const glm::vec3& d, const render::Sphere& s, int label) {
+  const glm::vec3 o = eye - s.center;
+  const float half_b = glm::dot(o, d), c = glm::dot(o, o) - s.radius * s.radius;
+  const float disc = half_b * half_b - c;
+  if (disc < 0.0f) return;
+  const float t = -half_b - std::sqrt(disc);
+  if (t > 0.0f && t < hit.t) hit.take(t, label, glm::normalize(eye + t * d - s.center));
+}
+
+void hit_pole(Hit& hit, const glm::vec3& eye, const glm::vec3& d, const SweepPole& pole, int label) {
+  // The side: |(eye + t d).xz − foot|² = r², the near root, 0 ≤ y ≤ height.
+  const glm::vec2 o = glm::vec2(eye.x, eye.z) - pole.foot_xz, dxz(d.x, d.z);
+  const float a = glm::dot(dxz, dxz), half_b = glm::dot(o, dxz), c = glm::dot(o, o) - pole.radius * pole.radius;
+  const float disc = half_b * half_b - a * c;
+  if (a > 0.0f && disc >= 0.0f) {
+    const float t = (-half_b - std::sqrt(disc)) / a;
+    const float y = eye.y + t * d.y;
+    if (y >= 0.0f && y <= pole.height) {
+      const glm::vec2 n = (o + t * dxz) / pole.radius;
+      hit.take(t, label, glm::vec3(n.x, 0.0f, n.y));
+    }
+  }
+  if (d.y < 0.0f && eye.y > pole.height) {  // the top cap
+    const float t = (pole.height - eye.y) / d.y;
+    const glm::vec2 q = glm::vec2(eye.x, eye.z) + t * dxz - pole.foot_xz;
+    if (glm::dot(q, q) <= pole.radius * pole.radius) hit.take(t, label, glm::vec3(0.0f, 1.0f, 0.0f));
+  }
+}
+
+void hit_wall(Hit& hit, const glm::vec3& eye, const glm::vec3& d, const SweepWall& wall, int label) {
+  const float facing = glm::dot(wall.normal, d);
+  if (facing >= 0.0f) return;  // seen from behind or edge-on
+  const float t = glm::dot(wall.normal, wall.base_center - eye) / facing;
+  const glm::vec3 p = eye + t * d;
+  const glm::vec3 across = glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), wall.normal);
+  if (p.y >= 0.0f && p.y <= wall.height && std::abs(glm::dot(p - wall.base_center, across)) <= wall.half_width)
+    hit.take(t, label, wall.normal);
+}
+
+}  // namespace
+
+float eye_depth(const SweepCamera& camera, const glm::vec3& point) {
+  return glm::dot(point - camera.eye, camera_basis(camera).forward);
+}
+
+float pixel_size_at(const SweepCamera& camera, int size, float depth) {
+  return 2.0f * depth * camera_basis(camera).tangent / float(size);
+}
+
+SweepGBuffer trace_gbuffer(const SweepGeometry& geometry, const SweepCamera& camera, int size) {
   const Basis b = camera_basis(camera);
   SweepGBuffer g;
   g.size = size;
+  g.spheres = int(geometry.spheres.size());
+  g.poles = int(geometry.poles.size());
   const std::size_t n = std::size_t(size) * std::size_t(size);
   g.position.assign(n, glm::vec3(0.0f));
   g.normal.assign(n, glm::vec3(0.0f, 1.0f, 0.0f));
@@ -38,25 +105,17 @@ SweepGBuffer trace_gbuffer(std::span<const render::Sphere> spheres, const SweepC
       const float sx = (2.0f * (float(x) + 0.5f) / float(size) - 1.0f) * b.tangent;
       const float sy = (1.0f - 2.0f * (float(y) + 0.5f) / float(size)) * b.tangent;
       const glm::vec3 d = glm::normalize(b.forward + sx * b.right + sy * b.up);
-      float best = INFINITY;
-      int label = -1;
-      glm::vec3 normal(0.0f, 1.0f, 0.0f);
-      if (d.y < 0.0f) best = -camera.eye.y / d.y, label = 0;
-      for (std::size_t index = 0; index < spheres.size(); ++index) {
-        const render::Sphere& s = spheres[index];
-        const glm::vec3 o = camera.eye - s.center;
-        const float half_b = glm::dot(o, d), c = glm::dot(o, o) - s.radius * s.radius;
-        const float disc = half_b * half_b - c;
-        if (disc < 0.0f) continue;
-        const float t = -half_b - std::sqrt(disc);
-        if (t > 0.0f && t < best) best = t, label = 1 + int(index), normal = glm::normalize(camera.eye + t * d - s.center);
-      }
-      if (label < 0) continue;
+      Hit hit;
+      if (d.y < 0.0f) hit.take(-camera.eye.y / d.y, 0, glm::vec3(0.0f, 1.0f, 0.0f));
+      for (std::size_t i = 0; i < geometry.spheres.size(); ++i) hit_sphere(hit, camera.eye, d, geometry.spheres[i], 1 + int(i));
+      for (std::size_t i = 0; i < geometry.poles.size(); ++i) hit_pole(hit, camera.eye, d, geometry.poles[i], g.pole_label(int(i)));
+      for (std::size_t i = 0; i < geometry.walls.size(); ++i) hit_wall(hit, camera.eye, d, geometry.walls[i], g.wall_label(int(i)));
+      if (hit.label < 0) continue;
       const std::size_t i = std::size_t(y) * std::size_t(size) + std::size_t(x);
-      g.position[i] = camera.eye + best * d;
-      g.normal[i] = normal;
-      g.depth.values[i] = best * glm::dot(d, b.forward);
-      g.label[i] = label;
+      g.position[i] = camera.eye + hit.t * d;
+      g.normal[i] = hit.normal;
+      g.depth.values[i] = hit.t * glm::dot(d, b.forward);
+      g.label[i] = hit.label;
     }
   return g;
 }
@@ -81,7 +140,8 @@ SweepImage render_sweep_frame(const render::FrameTables& tables, std::span<const
       r.value = float(shade.value), r.unshadowed = float(shade.unshadowed);
       r.depth = g.depth.values[i], r.position = g.position[i], r.normal = g.normal[i];
     }
-  SweepImage image{ref::Plane(size, size), ref::Plane(size, size), ref::Plane(size, size)};
+  SweepImage image{ref::Plane(size, size), std::vector<bool>(std::size_t(size) * std::size_t(size), false), ref::Plane(size, size),
+                   ref::Plane(size, size)};
   for (int y = 0; y < size; ++y)
     for (int x = 0; x < size; ++x) {
       const std::size_t i = at(x, y);
@@ -102,10 +162,11 @@ SweepImage render_sweep_frame(const render::FrameTables& tables, std::span<const
         t.position = r.position, t.depth = r.depth, t.normal = r.normal;
         t.bilinear_weight = footprint.bilinear_weight[tap];
       }
-      const glm::vec3 both =
-          render::upsample(std::span<const render::UpsampleTap, 4>(taps), g.position[i], g.depth.values[i], g.normal[i], upsampling, depth_epsilon);
-      image.shade.values[i] = both.x;
-      image.unshadowed.values[i] = both.y;
+      const render::Upsampled both = render::upsample_with_match(std::span<const render::UpsampleTap, 4>(taps), g.position[i],
+                                                                 g.depth.values[i], g.normal[i], upsampling, depth_epsilon);
+      image.shade.values[i] = both.value.x;
+      image.unshadowed.values[i] = both.value.y;
+      image.no_match[i] = both.best_match < render::kUpsampleMatchFactor;
     }
   return image;
 }

@@ -13,7 +13,7 @@
 //   S2 pass-through      a sphere through the receiver: excess step (u), error for |h| < r (%)
 //   S3 large caps, HYB   α = 1..89.9°, 2..12 spheres: SH-vector error (%); HYB switch jump (u)
 //   S4 order and window  n = 3..6 × window: overshoot above unshadowed (u), negativity (u), before the F4 clamp
-//   S5 silhouettes       k = 2..8 × upsampler × camera distance: edge-band error over interior error
+//   S5 silhouettes       k = 2..8 × upsampler × camera distance: edge-band and thin-pole error over interior error, no-match pixels
 //   S6 influence fade    a sphere from 40r to 2r, η × light: entry step (u), missing shadow (u)
 //   S7 camera crawl      static world, moving camera, k × upsampler: flicker (u) of the error against k = 1 and F, exact reprojection
 //   S8 LOD switch        64 → 8 spheres, hard vs cross-fade: pop (u)
@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "base/result.h"
+#include "study/stability_gpu.h"
 #include "study/stability_metrics.h"
 
 namespace proxygi::study {
@@ -46,7 +47,7 @@ struct SweepPoint {
   bool pass = true;
 };
 
-// Per-frame curves (S6–S8) and per-pixel error images at a method's worst point (S5, S7, S9),
+// Curves (per frame in S6–S8; S5: error against pole width / k) and per-pixel error images at a method's worst point (S5, S7, S9),
 // drawn by `bench stability` as stability-<id>-traces.png and stability-<id>-heatmaps.png.
 struct SweepTrace {
   std::string panel;   // the y quantity, with its unit: traces of one panel share an axis
@@ -69,6 +70,7 @@ struct SweepResult {
   BoundsCounts bounds;                // the frame's outputs over the whole sweep
   std::vector<std::string> notes;     // measured facts beyond the metrics, one sentence each
   std::string trace_x_label;
+  bool trace_log_x = false;
   std::vector<SweepTrace> traces;
   std::vector<SweepHeatMap> heat_maps;
   double seconds = 0.0;
@@ -83,6 +85,8 @@ struct StabilityOptions {
   int noise_size = 96;
   // S10's threshold: the smallest relative MSE the chart ranks (its best proxy row) / 3; ≤ 0: none.
   double noise_threshold = 0.0;
+  // When set, S6 also runs on the GPU frame (shadow gather and raster splat; stability_gpu.h).
+  GpuReceiverShader* gpu = nullptr;
 };
 
 // "S1" .. "S10" in order.

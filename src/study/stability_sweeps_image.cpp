@@ -1,7 +1,8 @@
-// S5 silhouettes and S7 camera crawl on the small CPU frame (stability_frame.h): a posed
-// "character" of five spheres standing on the ground.
+// S5 silhouettes and thin features, and S7 camera crawl, on the small CPU frame
+// (stability_frame.h): a posed "character" of five spheres standing on the ground.
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "study/stability_frame.h"
 #include "study/stability_sweep_parts.h"
@@ -36,16 +37,39 @@ void count_image(SweepResult& sweep, const SweepImage& image, const SweepGBuffer
   sweep.bounds.merge(count_bounds(image.shade, image.unshadowed, &covered));
 }
 
+// S5's scene at one camera: the character, five receiver-only poles 1–16 px wide standing 0.5 m
+// behind it (each pole's radius set from this camera's pixel size at its axis), and a wall 2 m
+// behind the character facing the camera's side, so the poles stand before a far backdrop.
+constexpr int kPoleWidthsPx[5] = {1, 2, 4, 8, 16};
+
+SweepGeometry silhouette_scene(const SweepCamera& camera, int size) {
+  SweepGeometry geometry{five_sphere_character(), {}, {}};
+  const glm::vec3 toward_camera = glm::normalize(glm::vec3(camera.eye.x, 0.0f, camera.eye.z));
+  const glm::vec3 across = glm::cross(kUp, toward_camera);
+  const float lateral[5] = {0.36f, 0.5f, -0.42f, 0.72f, -0.7f};  // metres across the view, clear of the character
+  for (int i = 0; i < 5; ++i) {
+    const glm::vec3 foot = -0.5f * toward_camera + lateral[i] * across;
+    const float width = float(kPoleWidthsPx[i]) * pixel_size_at(camera, size, eye_depth(camera, foot + 0.5f * kUp));
+    geometry.poles.push_back({glm::vec2(foot.x, foot.z), 0.5f * width, 1.0f});
+  }
+  geometry.walls.push_back({-2.0f * toward_camera, toward_camera, 1.3f, 0.9f});
+  return geometry;
+}
+
 SweepResult silhouettes(const StabilityOptions& options) {
   SweepResult sweep;
   sweep.id = "S5";
-  sweep.title = "silhouettes: a five-sphere character on the ground, error of 1/k receivers against k = 1 (n = 4, sky)";
+  sweep.title = "silhouettes and thin features: a five-sphere character and poles 1-16 px wide before a far wall, 1/k receivers "
+                "against k = 1 (n = 4, sky)";
   sweep.x_label = "receiver scale k";
   sweep.log_x = true;
   sweep.metrics = {{"edge-band error / interior error (interior floored at 0.1u)", "ratio", 2.0},
-                   {"edge-band mean error", "u", INFINITY}};
+                   {"edge-band mean error", "u", INFINITY},
+                   {"thin features (poles): mean error / interior error (interior floored at 0.1u)", "ratio", 2.0},
+                   {"no-match pixels (no tap's eq. 11 factor reaches 1/2)", "%", 0.5}};
+  sweep.trace_x_label = "pole width / k (receiver spacing)";
+  sweep.trace_log_x = true;
   const render::FrameTables tables = sweep_tables(sweep_lighting(SweepLight::sky), 4, 8.0);
-  const std::vector<render::Sphere> spheres = five_sphere_character();
   const int size = options.quick ? 96 : 128;
   double worst_ratio[2] = {-1.0, -1.0};
   for (float distance : {1.0f, 4.0f, 16.0f}) {
@@ -53,30 +77,49 @@ SweepResult silhouettes(const StabilityOptions& options) {
     camera.eye = glm::vec3(0.0f, 0.5f, 0.0f) + distance * glm::vec3(1.2f, 0.9f, 2.2f);
     camera.target = glm::vec3(0.0f, 0.45f, 0.0f);
     camera.fov_y_degrees = 40.0f / distance;  // the character keeps its size; the ground recedes to the horizon
-    const SweepGBuffer g = trace_gbuffer(spheres, camera, size);
-    const SweepImage full = render_sweep_frame(tables, spheres, g, 1, settings::Upsampling::bilinear, kEpsilon);
+    const SweepGeometry geometry = silhouette_scene(camera, size);
+    const SweepGBuffer g = trace_gbuffer(geometry, camera, size);
+    const SweepImage full = render_sweep_frame(tables, geometry.spheres, g, 1, settings::Upsampling::bilinear, kEpsilon);
     count_image(sweep, full, g);
     const ref::Plane reference = in_u(full);
-    const ref::ReceiverMask covered = ref::mask_where(size, size, [&](int x, int y) { return g.label[std::size_t(y * size + x)] >= 0; });
-    // Silhouettes by label (sphere against sphere, ground or sky): at 16x the character stands only
+    auto label_at = [&](int x, int y) { return g.label[std::size_t(y * size + x)]; };
+    const ref::ReceiverMask covered = ref::mask_where(size, size, [&](int x, int y) { return label_at(x, y) >= 0; });
+    const ref::ReceiverMask poles = ref::mask_where(size, size, [&](int x, int y) { return g.is_pole(label_at(x, y)); });
+    // Silhouettes by label (sphere, pole, wall, ground or sky): at 16x the character stands only
     // 2.4 % of the eye depth before the ground, below any depth-jump threshold the near ground passes.
-    const ref::ReceiverMask edge = mask_and(label_edge_band_mask(size, size, g.label, 1), covered);
-    const ref::ReceiverMask interior = mask_and_not(covered, edge);
+    const ref::ReceiverMask edge = mask_and_not(mask_and(label_edge_band_mask(size, size, g.label, 1), covered), poles);
+    const ref::ReceiverMask interior = mask_and_not(mask_and_not(covered, edge), poles);
+    const std::string at_distance = "distance " + fixed(distance, 0) + "x";
     for (int k : {2, 4, 8})
       for (int u = 0; u < 2; ++u) {
-        const SweepImage image = render_sweep_frame(tables, spheres, g, k, kUpsamplers[u], kEpsilon);
+        const SweepImage image = render_sweep_frame(tables, geometry.spheres, g, k, kUpsamplers[u], kEpsilon);
         count_image(sweep, image, g);
         const ref::Plane test = in_u(image);
         const ErrorSummary at_edges = absolute_error(test, reference, &edge);
         const ErrorSummary inside = absolute_error(test, reference, &interior);
-        const std::string series = std::string(kUpsamplerNames[u]) + " distance " + fixed(distance, 0) + "x";
+        const ErrorSummary on_poles = absolute_error(test, reference, &poles);
+        const std::string series = std::string(kUpsamplerNames[u]) + " " + at_distance;
         const double ratio = at_edges.mean / std::max(inside.mean, 0.1);
         add_point(sweep, kUpsamplerNames[u], series, k, 0, ratio);
         add_point(sweep, kUpsamplerNames[u], series, k, 1, at_edges.mean);
+        add_point(sweep, kUpsamplerNames[u], series, k, 2, on_poles.mean / std::max(inside.mean, 0.1));
+        if (kUpsamplers[u] == settings::Upsampling::bilateral) {
+          std::size_t rejected = 0;
+          for (std::size_t i = 0; i < image.no_match.size(); ++i) rejected += covered.contains(i) && image.no_match[i];
+          add_point(sweep, kUpsamplerNames[u], series, k, 3, 100.0 * double(rejected) / double(std::max<std::size_t>(covered.count(), 1)));
+        }
+        SweepTrace by_width{"mean error on a pole against k = 1 (u), " + at_distance, std::string(kUpsamplerNames[u]) + " k=" + std::to_string(k), {}, {}};
+        for (int pole = 0; pole < g.poles; ++pole) {
+          const ref::ReceiverMask one = ref::mask_where(size, size, [&](int x, int y) { return label_at(x, y) == g.pole_label(pole); });
+          if (one.count() == 0) continue;
+          by_width.x.push_back(double(kPoleWidthsPx[pole]) / k);
+          by_width.y.push_back(absolute_error(test, reference, &one).mean);
+        }
+        sweep.traces.push_back(std::move(by_width));
         if (ratio > worst_ratio[u]) {  // the heat map at this method's worst point
           worst_ratio[u] = ratio;
-          SweepHeatMap map{std::string(kUpsamplerNames[u]) + " k=" + std::to_string(k) + ", distance " + fixed(distance, 0) +
-                               "x: |x - x(k=1)|, edge/interior " + fixed(ratio, 1),
+          SweepHeatMap map{std::string(kUpsamplerNames[u]) + " k=" + std::to_string(k) + ", " + at_distance +
+                               ": |x - x(k=1)|, edge/interior " + fixed(ratio, 1),
                            "u", ref::Plane(size, size, NAN)};
           for (std::size_t i = 0; i < map.values.values.size(); ++i)
             if (covered.contains(i)) map.values.values[i] = std::abs(test.values[i] - reference.values[i]);
@@ -85,8 +128,9 @@ SweepResult silhouettes(const StabilityOptions& options) {
         }
       }
   }
-  sweep.notes.push_back("edge band: 1 px around the silhouettes of the spheres (study::label_edge_band_mask); the camera's field of view "
-                        "narrows with its distance so the character keeps its size on screen");
+  sweep.notes.push_back("edge band: 1 px around every silhouette (study::label_edge_band_mask), pole pixels left out; thin features: the "
+                        "pole pixels (poles 1, 2, 4, 8, 16 px wide, receivers only: they cast no shadow, the character shadows them); "
+                        "the camera's field of view narrows with its distance so the character keeps its size on screen");
   return sweep;
 }
 

@@ -2,6 +2,7 @@
 // reprojection is the identity), scored with the temporal metrics.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "proxies/lod.h"
 #include "scene/scene_defaults.h"
@@ -11,6 +12,32 @@
 
 namespace proxygi::study {
 namespace {
+
+std::string scientific(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2g", value);
+  return text;
+}
+
+// S6's two metrics for one method's blocked light against the truth's, per frame (E units;
+// `open` is the truth's unshadowed shade, which sets u).
+struct FadeScore {
+  double step = 0.0;     // the largest per-frame change minus the truth's, distance ≥ 0.5 η r
+  double missing = 0.0;  // the largest blocked light the method misses, distance ≥ 0.7 η r
+};
+FadeScore score_fade(const std::vector<double>& method, const std::vector<double>& exact, const std::vector<float>& distance_r,
+                     double open, float eta) {
+  FadeScore score;
+  for (std::size_t t = 0; t < method.size(); ++t) {
+    if (distance_r[t] >= 0.7f * eta) score.missing = std::max(score.missing, (exact[t] - method[t]) / (open * kDisplayStep));
+    // Around the influence boundary only (distance ≥ 0.5 η r): closer in, the change is the shadow's own.
+    if (t == 0 || distance_r[t] < 0.5f * eta) continue;
+    const ref::Plane x0(1, 1, float(method[t - 1])), x1(1, 1, float(method[t]));
+    const ref::Plane r0(1, 1, float(exact[t - 1])), r1(1, 1, float(exact[t]));
+    score.step = std::max(score.step, temporal_gradient_error(x0, x1, r0, r1, Reprojection::identity(1, 1)).max / (open * kDisplayStep));
+  }
+  return score;
+}
 
 SweepResult influence_fade(const StabilityOptions& options) {
   SweepResult sweep;
@@ -22,9 +49,16 @@ SweepResult influence_fade(const StabilityOptions& options) {
   const float r = 0.1f;
   const int frames = options.quick ? 120 : 240;
   const glm::vec3 direction = glm::normalize(glm::vec3(1.0f, 1.0f, 0.0f));
+  std::vector<float> distance_r;  // the sphere's center distance / r, per frame
+  std::vector<std::vector<render::Sphere>> spheres;
+  for (int t = 0; t < frames; ++t) {
+    distance_r.push_back(40.0f - 38.0f * float(t) / float(frames - 1));
+    spheres.push_back({render::Sphere{direction * (r * distance_r.back()), r, glm::vec3(0.8f)}});
+  }
   // Last: η from the lighting (shadow_eta "auto"), at the η it resolves to.
   std::vector<float> etas = options.quick ? std::vector<float>{5, 10, 15, 30} : std::vector<float>{5, 7.5f, 10, 15, 20, 25, 30};
   etas.push_back(settings::kEtaFromLighting);
+  const float default_eta = settings::RenderSettings{}.shadow_eta;
   for (SweepLight light : {SweepLight::sky, SweepLight::delta}) {
     const sh::RgbSh lighting = sweep_lighting(light);
     for (float setting : etas) {
@@ -34,46 +68,53 @@ SweepResult influence_fade(const StabilityOptions& options) {
                                (setting == settings::kEtaFromLighting ? " light, auto eta" : " light");
       const TruthIntegrator truth(tables, 16);
       const double open = truth.unshadowed(glm::dvec3(kUp));
-      ref::Plane method(frames, 1), exact(frames, 1);
-      double missing = 0.0;
+      // Both as blocked light from their own unshadowed shade.
+      std::vector<double> method, exact;
       for (int t = 0; t < frames; ++t) {
-        const float distance = r * (40.0f - 38.0f * float(t) / float(frames - 1));
-        const render::Sphere sphere{direction * distance, r, glm::vec3(0.8f)};
-        const MethodShade shade = shade_method(tables, kTau, glm::vec3(0.0f), kUp, std::span(&sphere, 1));
+        const MethodShade shade = shade_method(tables, kTau, glm::vec3(0.0f), kUp, spheres[std::size_t(t)]);
         count_output(sweep, shade);
-        // Both as blocked light from their own unshadowed shade.
-        method.values[std::size_t(t)] = float(shade.unshadowed - shade.value);
-        exact.values[std::size_t(t)] = float(open - truth.shadowed_one(glm::vec3(0.0f), kUp, sphere));
-        if (distance >= 0.7f * eta * r)
-          missing = std::max(missing, (exact.values[std::size_t(t)] - method.values[std::size_t(t)]) / (open * kDisplayStep));
+        method.push_back(shade.unshadowed - shade.value);
+        exact.push_back(open - truth.shadowed_one(glm::vec3(0.0f), kUp, spheres[std::size_t(t)][0]));
       }
-      // Frame-to-frame: the per-frame change against the truth's (temporal-gradient error along time).
-      double step = 0.0;
-      for (int t = 1; t < frames; ++t) {
-        // Around the influence boundary only (distance ≥ 0.5 η r): closer in, the change is the shadow's own.
-        if (r * (40.0f - 38.0f * float(t) / float(frames - 1)) < 0.5f * eta * r) break;
-        const ref::Plane x0(1, 1, method.values[std::size_t(t - 1)]), x1(1, 1, method.values[std::size_t(t)]);
-        const ref::Plane r0(1, 1, exact.values[std::size_t(t - 1)]), r1(1, 1, exact.values[std::size_t(t)]);
-        step = std::max(step, temporal_gradient_error(x0, x1, r0, r1, Reprojection::identity(1, 1)).max / (open * kDisplayStep));
-      }
-      add_point(sweep, "hyb", name, eta, 0, step);
-      add_point(sweep, "hyb", name, eta, 1, missing);
+      const FadeScore twin = score_fade(method, exact, distance_r, open, eta);
+      add_point(sweep, "hyb", name, eta, 0, twin.step);
+      add_point(sweep, "hyb", name, eta, 1, twin.missing);
       if (setting == settings::kEtaFromLighting)
         sweep.notes.push_back(name + ": eta = " + fixed(eta, 2) + " (c_L = " + fixed(double(eta) * eta * settings::kEtaCutoffError, 2) + ")");
-      if (setting == 15.0f) {  // the default η: the traces behind its two points
+      // The GPU frame's passes at the default and the automatic η: the shadow gather and the raster
+      // splat (the splat cuts the influence by its rasterized footprint), against the same truth.
+      if (options.gpu != nullptr && (setting == default_eta || setting == settings::kEtaFromLighting))
+        for (settings::SplatMethod splat : {settings::SplatMethod::compute, settings::SplatMethod::raster}) {
+          auto shaded = options.gpu->shade(tables, splat, spheres);
+          const std::string gpu_method = splat == settings::SplatMethod::compute ? "gpu gather" : "gpu splat";
+          if (!shaded) {
+            sweep.notes.push_back(gpu_method + ", " + name + ": not run: " + shaded.message());
+            continue;
+          }
+          std::vector<double> gpu;
+          double from_twin = 0.0;
+          for (std::size_t t = 0; t < shaded->size(); ++t) {
+            gpu.push_back((*shaded)[t].unshadowed - (*shaded)[t].shadowed);
+            from_twin = std::max(from_twin, std::abs(gpu.back() - method[t]) / (open * kDisplayStep));
+          }
+          const FadeScore score = score_fade(gpu, exact, distance_r, open, eta);
+          add_point(sweep, gpu_method, gpu_method + ", " + name, eta, 0, score.step);
+          add_point(sweep, gpu_method, gpu_method + ", " + name, eta, 1, score.missing);
+          sweep.notes.push_back(gpu_method + ", " + name + " (eta " + fixed(eta, 1) + "): blocked light differs from the CPU twin's by at most " +
+                                scientific(from_twin) + "u over the " + std::to_string(frames) + " frames");
+        }
+      if (setting == default_eta) {  // the default η: the traces behind its two points
         SweepTrace value{"blocked light (u)", "hyb, " + name, {}, {}};
         SweepTrace truth_trace{"blocked light (u)", "truth, " + name, {}, {}};
         SweepTrace change{"per-frame change minus the truth's (u)", "hyb, " + name, {}, {}};
         for (int t = 0; t < frames; ++t) {
-          const double distance_r = 40.0 - 38.0 * double(t) / double(frames - 1);
-          value.x.push_back(distance_r), truth_trace.x.push_back(distance_r);
-          value.y.push_back(method.values[std::size_t(t)] / (open * kDisplayStep));
-          truth_trace.y.push_back(exact.values[std::size_t(t)] / (open * kDisplayStep));
+          const std::size_t i = std::size_t(t);
+          value.x.push_back(distance_r[i]), truth_trace.x.push_back(distance_r[i]);
+          value.y.push_back(method[i] / (open * kDisplayStep));
+          truth_trace.y.push_back(exact[i] / (open * kDisplayStep));
           if (t > 0) {
-            change.x.push_back(distance_r);
-            change.y.push_back(((method.values[std::size_t(t)] - method.values[std::size_t(t - 1)]) -
-                                (exact.values[std::size_t(t)] - exact.values[std::size_t(t - 1)])) /
-                               (open * kDisplayStep));
+            change.x.push_back(distance_r[i]);
+            change.y.push_back(((method[i] - method[i - 1]) - (exact[i] - exact[i - 1])) / (open * kDisplayStep));
           }
         }
         sweep.traces.push_back(std::move(value));

@@ -158,6 +158,64 @@ TEST(StabilityFrame, SeesTheCharacterFromFarAndUpsamplingChangesItsEdges) {
   }
 }
 
+// S5's thin features: a pole whose radius is set from the camera's pixel size covers that many
+// pixels per row, and a wall behind it is seen around it, facing the camera.
+TEST(StabilityFrame, PoleCoversItsWidthInPixelsBeforeTheWall) {
+  SweepCamera camera;
+  camera.eye = glm::vec3(0.0f, 0.5f, 3.0f);
+  camera.target = glm::vec3(0.0f, 0.5f, 0.0f);
+  const int size = 64;
+  for (int width : {1, 4, 9}) {
+    const float radius = 0.5f * float(width) * pixel_size_at(camera, size, eye_depth(camera, glm::vec3(0.0f, 0.5f, 0.0f)));
+    const SweepGeometry geometry{{}, {{glm::vec2(0.0f), radius, 1.0f}}, {{glm::vec3(0.0f, 0.0f, -2.0f), glm::vec3(0.0f, 0.0f, 1.0f), 3.0f, 2.0f}}};
+    const SweepGBuffer g = trace_gbuffer(geometry, camera, size);
+    const int row = size / 2;  // the camera's height: the pole's middle
+    int pole = 0, wall = 0;
+    for (int x = 0; x < size; ++x) {
+      const std::size_t i = std::size_t(row * size + x);
+      if (g.is_pole(g.label[i])) {
+        ++pole;
+        EXPECT_NEAR(std::hypot(g.position[i].x, g.position[i].z), radius, 1e-4f);  // on the pole's side
+        EXPECT_GT(g.normal[i].z, 0.0f);
+      }
+      if (g.label[i] == g.wall_label(0)) {
+        ++wall;
+        EXPECT_NEAR(g.position[i].z, -2.0f, 1e-4f);
+        EXPECT_EQ(g.normal[i], glm::vec3(0.0f, 0.0f, 1.0f));
+      }
+    }
+    EXPECT_NEAR(pole, width, 1) << width;
+    EXPECT_EQ(pole + wall, size) << width;
+  }
+}
+
+// F9 at 1/k: a 1-px pole before a wall gets no receiver of its own at k = 4, so no tap matches
+// its surface (the taps lie on the wall's plane, 2 m behind) on most of its pixels; at k = 1 every
+// pixel is its own tap, and bilinear (which weighs no surface) always counts as matched.
+TEST(StabilityFrame, ThinPoleAtOneOverKRejectsEveryBilateralTap) {
+  const render::FrameTables tables = sweep_tables(sweep_lighting(SweepLight::sky), 4, 8.0);
+  SweepCamera camera;
+  camera.eye = glm::vec3(0.0f, 0.5f, 3.0f);
+  camera.target = glm::vec3(0.0f, 0.5f, 0.0f);
+  const int size = 64;
+  // The pole fills display column 32, which no receiver stands for at k = 4 (receivers.comp takes
+  // each 4x4 block's texel (2, 2): columns 30, 34, ...).
+  const float pixel = pixel_size_at(camera, size, eye_depth(camera, glm::vec3(0.0f, 0.5f, 0.0f)));
+  const SweepGeometry geometry{{}, {{glm::vec2(0.5f * pixel, 0.0f), 0.5f * pixel, 1.0f}}, {{glm::vec3(0.0f, 0.0f, -2.0f), glm::vec3(0.0f, 0.0f, 1.0f), 3.0f, 2.0f}}};
+  const SweepGBuffer g = trace_gbuffer(geometry, camera, size);
+  auto rejected_on_pole = [&](const SweepImage& image) {
+    std::size_t pole = 0, rejected = 0;
+    for (std::size_t i = 0; i < g.label.size(); ++i)
+      if (g.is_pole(g.label[i])) ++pole, rejected += image.no_match[i];
+    return std::pair(pole, rejected);
+  };
+  const auto [pole, at_k4] = rejected_on_pole(render_sweep_frame(tables, {}, g, 4, settings::Upsampling::bilateral, 0.01f));
+  ASSERT_GT(pole, 10u);
+  EXPECT_GT(at_k4, pole / 2);
+  EXPECT_EQ(rejected_on_pole(render_sweep_frame(tables, {}, g, 1, settings::Upsampling::bilateral, 0.01f)).second, 0u);
+  EXPECT_EQ(rejected_on_pole(render_sweep_frame(tables, {}, g, 4, settings::Upsampling::bilinear, 0.01f)).second, 0u);
+}
+
 }  // namespace
 }  // namespace proxygi::study
 
