@@ -3,7 +3,8 @@
 // test image against a reference, and both images' mean luminance, over receiver pixels; bounds
 // (negative, NaN/Inf, above unshadowed) and per-region scores (apps/compare_regions.h).
 // Unreadable images, a size mismatch or an empty mask exit with code 2; a failed error-image
-// write exits with code 1.
+// write exits with code 1. With --sequence TEST and REFERENCE are folders of frames: the temporal
+// metrics with exact reprojection (apps/compare_sequence.h).
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -15,6 +16,7 @@
 
 #include "apps/commands.h"
 #include "apps/compare_regions.h"
+#include "apps/compare_sequence.h"
 #include "image/image.h"
 #include "ref/error_image.h"
 #include "ref/flip.h"
@@ -172,8 +174,24 @@ void add_compare_command(CLI::App& app, CommandRunner& runner) {
       ->check(CLI::IsMember({"auto", "ldr", "hdr"}));
   command->add_option("--ppd", args.pixels_per_degree, "FLIP observer: pixels per degree of visual angle (default 67)")
       ->check(CLI::PositiveNumber);
+  static bool sequence = false;
+  static std::string frames, scene;
+  command->add_flag("--sequence", sequence,
+                    "TEST and REFERENCE are folders of frame_%05d.exr: temporal metrics (E_delta, pop, flicker) with exact "
+                    "reprojection traced from --scene");
+  command->add_option("--frames", frames, "With --sequence: the frames A:B (inclusive) to compare");
+  command->add_option("--scene", scene, "With --sequence: the scene both sequences show (as record's SCENE; default: default)");
   add_quiet_flag(*command);
-  command->callback([&runner] { runner = [] { return run_compare(args); }; });
+  command->callback([&runner] {
+    if (sequence) {
+      runner = [] {
+        if (frames.empty()) return fail_bad_input("compare --sequence: --frames A:B is required");
+        return run_compare_sequence({args.test, args.reference, frames, scene, args.json});
+      };
+      return;
+    }
+    runner = [] { return run_compare(args); };
+  });
 }
 
 }  // namespace proxygi::app

@@ -172,6 +172,9 @@ std::optional<SurfaceHit> EmbreeScene::intersect(const glm::vec3& origin, const 
     const glm::vec2 uv = mesh.uvs.empty() ? glm::vec2(0.0f) : w * mesh.uvs[tri[0]] + u * mesh.uvs[tri[1]] + v * mesh.uvs[tri[2]];
     hit.albedo = material_albedo(mesh.material, uv);
     hit.character = mesh.character;
+    hit.mesh = query.hit.geomID;
+    hit.triangle = query.hit.primID;
+    hit.barycentric = glm::vec2(u, v);
   } else {
     const SphereShape& sphere = spheres_[query.hit.primID];
     geometric = hit.position - sphere.center;

@@ -70,6 +70,12 @@ struct SurfaceHit {
   glm::vec3 shading_normal{0.0f};     // unit, interpolated vertex normal on the geometric side
   glm::vec3 albedo{0.0f};
   bool character = false;             // the mesh hit is a character's
+  // Which surface point: mesh index into build()'s meshes and triangle (kNoTriangle for a sphere),
+  // barycentrics (u, v) of indices 1 and 2. The same point of a re-posed copy of the meshes is
+  // (1 − u − v) p0 + u p1 + v p2 of that triangle (exact reprojection).
+  static constexpr std::uint32_t kNoTriangle = 0xFFFFFFFFu;
+  std::uint32_t mesh = kNoTriangle, triangle = kNoTriangle;
+  glm::vec2 barycentric{0.0f};
 };
 
 class EmbreeScene {
