@@ -18,7 +18,8 @@ const std::map<std::string, std::string> kChartRowOf = {
     {"hyb", "proxy n4 k4 bilateral averaged"}, {"hard", "proxy n4 k4 bilateral averaged"},
     {"fade1", "proxy n4 k4 bilateral averaged"}, {"fade4", "proxy n4 k4 bilateral averaged"},
     {"fade16", "proxy n4 k4 bilateral averaged"}, {"bilateral", "proxy n4 k4 bilateral averaged"},
-    {"bilinear", "proxy n4 k4 bilinear averaged"}, {"k1", "proxy n4 k1 averaged"}, {"path", "path 64 spp"}};
+    {"bilinear", "proxy n4 k4 bilinear averaged"}, {"k1", "proxy n4 k1 averaged"}, {"path", "path 64 spp"},
+    {"ao", "ao k4 bilateral"}, {"vertex", "vertex n4"}, {"gpu gather", "proxy n4 k4 bilateral averaged"}};
 
 std::vector<std::string> split_csv_line(const std::string& line) {
   std::vector<std::string> out;

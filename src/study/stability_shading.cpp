@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "image/image.h"
+#include "render/baselines.h"
+#include "render/ground_grid.h"
 #include "sh/basis.h"
 #include "sh/convolution.h"
 #include "sh/exponential.h"
@@ -106,6 +108,43 @@ MethodShade shade_method(const render::FrameTables& tables, float tau, const glm
                          std::span<const render::Sphere> spheres) {
   const std::vector<float> f = render::accumulate_log_occlusion(tables, p, normal, spheres);
   return shade_log_sum(tables, tau, f, p, normal);
+}
+
+MethodShade shade_ambient_occlusion(const render::FrameTables& tables, const glm::vec3& p, const glm::vec3& normal,
+                                    std::span<const render::Sphere> spheres) {
+  const render::AmbientOcclusionResult ao = render::ambient_occlusion(tables, p, normal, spheres);
+  MethodShade out;
+  out.unshadowed = luminance(render::unshadowed_irradiance(tables, p, normal));
+  out.unclamped = luminance(ao.irradiance);
+  out.value = std::clamp(out.unclamped, 0.0, out.unshadowed);
+  return out;
+}
+
+MethodShade shade_vertex_ground(const render::FrameTables& tables, float tau, const glm::vec3& p, std::span<const render::Sphere> spheres) {
+  const glm::vec3 up(0.0f, 1.0f, 0.0f);
+  const float spacing = 1.0f / render::kGroundVerticesPerMetre;
+  const glm::vec2 origin = kVertexGridOffset * spacing;
+  const glm::vec2 cell = glm::floor((glm::vec2(p.x, p.z) - origin) / spacing);
+  auto vertex = [&](float dx, float dz) {
+    const glm::vec2 at = origin + (cell + glm::vec2(dx, dz)) * spacing;
+    return glm::vec3(at.x, 0.0f, at.y);
+  };
+  // make_ground_grid's two triangles per cell: (corner, +z, +x) and (+x, +z, far).
+  const glm::vec2 local = (glm::vec2(p.x, p.z) - origin) / spacing - cell;
+  const bool first = local.x + local.y <= 1.0f;
+  const glm::vec3 a = first ? vertex(0, 0) : vertex(1, 0), b = vertex(0, 1), c = first ? vertex(1, 0) : vertex(1, 1);
+  glm::vec3 values[3];
+  const glm::vec3* corners[3] = {&a, &b, &c};
+  for (int i = 0; i < 3; ++i) {
+    const MethodShade at = shade_method(tables, tau, *corners[i], up, spheres);
+    values[i] = glm::vec3(float(at.value), float(at.unshadowed), float(at.unclamped));
+  }
+  const glm::vec3 mixed = render::interpolate_triangle(p, a, b, c, values[0], values[1], values[2]);
+  MethodShade out;
+  out.value = mixed.x;
+  out.unshadowed = mixed.y;
+  out.unclamped = mixed.z;
+  return out;
 }
 
 std::vector<float> product_space_visibility(const render::FrameTables& tables, const glm::vec3& p, const glm::vec3& normal,

@@ -32,6 +32,16 @@ struct MethodShade {
 // HYB with τ (kOptimalLinearOnly: OL) on the log sum of the spheres (accumulate_log_occlusion).
 MethodShade shade_method(const render::FrameTables& tables, float tau, const glm::vec3& p, const glm::vec3& normal,
                          std::span<const render::Sphere> spheres);
+// The prior-work baselines of the chart on the same receivers (render/baselines.h):
+// scalar AO from the spheres (the AO method: E = A · E(N), clamped as the frame writes it), and
+// the vertex method on the ground: HYB at the three vertices of the ground grid's triangle around
+// ground point p (spacing 1/render::kGroundVerticesPerMetre, triangulated as make_ground_grid;
+// the grid's lines are offset by kVertexGridOffset of a cell so p lies inside a triangle rather
+// than on a vertex), interpolated linearly (render::interpolate_triangle). `visibility` is empty.
+inline constexpr glm::vec2 kVertexGridOffset{0.37f, 0.61f};
+MethodShade shade_ambient_occlusion(const render::FrameTables& tables, const glm::vec3& p, const glm::vec3& normal,
+                                    std::span<const render::Sphere> spheres);
+MethodShade shade_vertex_ground(const render::FrameTables& tables, float tau, const glm::vec3& p, std::span<const render::Sphere> spheres);
 // The same with an explicit log sum f (n² values).
 MethodShade shade_log_sum(const render::FrameTables& tables, float tau, std::span<const float> f, const glm::vec3& p,
                           const glm::vec3& normal);

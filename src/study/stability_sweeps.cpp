@@ -69,7 +69,7 @@ SweepResult overlap_stack(const StabilityOptions& options) {
       std::vector<render::Sphere> spheres;
       for (int i = 0; i < m; ++i)
         spheres.push_back({glm::vec3(0.0f, 2.0f * r, 0.0f) + float(delta) * r * jitter[std::size_t(i)], r, glm::vec3(0.8f)});
-      double error[4] = {0, 0, 0, 0};  // hyb, ol, product, exact
+      double error[6] = {0, 0, 0, 0, 0, 0};  // hyb, ol, product, exact, ao, vertex
       double indirect_change = 0.0;
       for (float x : receivers_x) {
         const glm::vec3 p(x, 0.0f, 0.0f);
@@ -81,8 +81,10 @@ SweepResult overlap_stack(const StabilityOptions& options) {
         const MethodShade product = shade_visibility(tables, product_space_visibility(tables, p, kUp, spheres), p, kUp);
         const std::vector<double> exact = sh::exp_exact(4, std::vector<double>(f.begin(), f.end()));
         const MethodShade exp_exact = shade_visibility(tables, std::vector<float>(exact.begin(), exact.end()), p, kUp);
-        const MethodShade* shades[4] = {&hyb, &ol, &product, &exp_exact};
-        for (int i = 0; i < 4; ++i) {
+        const MethodShade ao = shade_ambient_occlusion(tables, p, kUp, spheres);
+        const MethodShade vertex = shade_vertex_ground(tables, kTau, p, spheres);
+        const MethodShade* shades[6] = {&hyb, &ol, &product, &exp_exact, &ao, &vertex};
+        for (int i = 0; i < 6; ++i) {
           error[i] = std::max(error[i], blocked_error_u(*shades[i], open, shadowed));
           count_output(sweep, *shades[i]);
         }
@@ -106,8 +108,8 @@ SweepResult overlap_stack(const StabilityOptions& options) {
         }
       }
       const std::string tag = " delta=" + fixed(delta, 2);
-      const char* names[4] = {"hyb", "ol", "product", "exact"};
-      for (int i = 0; i < 4; ++i) add_point(sweep, names[i], std::string(names[i]) + tag, m, 0, error[i]);
+      const char* names[6] = {"hyb", "ol", "product", "exact", "ao", "vertex"};
+      for (int i = 0; i < 6; ++i) add_point(sweep, names[i], std::string(names[i]) + tag, m, 0, error[i]);
       if (delta == 0.0) add_point(sweep, "hyb", "indirect, averaged operator", m, 1, indirect_change);
     }
   }

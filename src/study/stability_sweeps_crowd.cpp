@@ -77,12 +77,13 @@ SweepResult crowd_sweep(const StabilityOptions& options) {
   const std::vector<int> counts = options.quick ? std::vector<int>{1, 5, 20} : std::vector<int>{1, 2, 5, 10, 20};
   const std::vector<float> spacings = options.quick ? std::vector<float>{1.0f, 0.4f} : std::vector<float>{2.0f, 1.0f, 0.6f, 0.4f};
   const int grid = options.quick ? 6 : 10;
-  const char* names[3] = {"hyb", "product", "exact"};
-  std::vector<std::pair<double, double>> error_by_overlap[3];
+  constexpr int kMethods = 5;
+  const char* names[kMethods] = {"hyb", "product", "exact", "ao", "vertex"};
+  std::vector<std::pair<double, double>> error_by_overlap[kMethods];
   std::vector<std::pair<double, double>> time_by_spheres;
   std::string worst_text;
-  double worst = -1.0, worst_mean[3] = {-1.0, -1.0, -1.0};
-  sweep.heat_maps.resize(3);
+  double worst = -1.0, worst_mean[kMethods] = {-1.0, -1.0, -1.0, -1.0, -1.0};
+  sweep.heat_maps.resize(kMethods);
   for (float spacing : spacings)
     for (int count : counts) {
       const std::vector<render::Sphere> spheres = crowd(count, spacing);
@@ -90,8 +91,8 @@ SweepResult crowd_sweep(const StabilityOptions& options) {
       float extent = 0.0f;
       for (const render::Sphere& s : spheres) extent = std::max({extent, std::abs(s.center.x), std::abs(s.center.z)});
       extent += 0.5f;
-      double sum[3] = {0, 0, 0}, peak[3] = {0, 0, 0}, overlap = 0.0, hyb_seconds = 0.0;
-      ref::Plane error_map[3] = {ref::Plane(grid, grid), ref::Plane(grid, grid), ref::Plane(grid, grid)};
+      double sum[kMethods] = {}, peak[kMethods] = {}, overlap = 0.0, hyb_seconds = 0.0;
+      std::vector<ref::Plane> error_map(kMethods, ref::Plane(grid, grid));
       int receivers = 0;
       for (int iz = 0; iz < grid; ++iz)
         for (int ix = 0; ix < grid; ++ix) {
@@ -106,11 +107,13 @@ SweepResult crowd_sweep(const StabilityOptions& options) {
           const std::vector<float> f = render::accumulate_log_occlusion(tables, p, kUp, spheres);
           const std::vector<double> exp_f = sh::exp_exact(4, std::vector<double>(f.begin(), f.end()));
           const MethodShade exp_exact = shade_visibility(tables, std::vector<float>(exp_f.begin(), exp_f.end()), p, kUp);
-          const MethodShade* shades[3] = {&hyb, &product, &exp_exact};
-          for (int m = 0; m < 3; ++m) {
+          const MethodShade ao = shade_ambient_occlusion(tables, p, kUp, spheres);
+          const MethodShade vertex = shade_vertex_ground(tables, kTau, p, spheres);
+          const MethodShade* shades[kMethods] = {&hyb, &product, &exp_exact, &ao, &vertex};
+          for (int m = 0; m < kMethods; ++m) {
             const double error = blocked_error_u(*shades[m], open, shadowed);
             sum[m] += error, peak[m] = std::max(peak[m], error);
-            error_map[m].at(ix, iz) = float(error);
+            error_map[std::size_t(m)].at(ix, iz) = float(error);
             count_output(sweep, *shades[m]);
           }
           overlap += redundant_blocking(hemisphere, p, spheres);
@@ -118,7 +121,7 @@ SweepResult crowd_sweep(const StabilityOptions& options) {
         }
       overlap /= double(receivers);
       const std::string series = "spacing " + fixed(spacing, 1) + " m";
-      for (int m = 0; m < 3; ++m) {
+      for (int m = 0; m < kMethods; ++m) {
         const double mean = sum[m] / double(receivers);
         add_point(sweep, names[m], std::string(names[m]) + " " + series, overlap, 0, mean);
         add_point(sweep, names[m], std::string(names[m]) + " " + series, overlap, 1, peak[m]);
@@ -127,7 +130,7 @@ SweepResult crowd_sweep(const StabilityOptions& options) {
           worst_mean[m] = mean;
           sweep.heat_maps[std::size_t(m)] = {std::string(names[m]) + ": " + std::to_string(count) + " characters " + fixed(spacing, 1) +
                                                  " m apart, ground +-" + fixed(extent, 2) + " m, mean " + fixed(mean, 2) + "u",
-                                             "u", error_map[m]};
+                                             "u", error_map[std::size_t(m)]};
         }
         if (m == 0 && mean > worst)
           worst = mean, worst_text = std::to_string(count) + " characters " + fixed(spacing, 1) + " m apart: mean " +
@@ -138,9 +141,11 @@ SweepResult crowd_sweep(const StabilityOptions& options) {
   // One slope per method over the whole sweep, drawn at the largest overlap.
   double widest = 0.0;
   for (const auto& [x, y] : error_by_overlap[0]) widest = std::max(widest, x);
-  for (int m = 0; m < 3; ++m) add_point(sweep, names[m], names[m], widest, 2, log_log_slope(error_by_overlap[m]));
+  for (int m = 0; m < kMethods; ++m) add_point(sweep, names[m], names[m], widest, 2, log_log_slope(error_by_overlap[m]));
   add_point(sweep, "hyb", "hyb", widest, 3, log_log_slope(time_by_spheres));
   sweep.notes.push_back("worst mean error of HYB: " + worst_text);
+  sweep.notes.push_back("ao: the AO baseline (scalar occlusion, render/baselines.h); vertex: HYB at the vertices of the ground grid's "
+                        "triangle around each receiver (6.25 cm spacing), interpolated (study::shade_vertex_ground)");
   sweep.notes.push_back("time: the CPU twin's per-receiver shading (accumulate and exponentiate), measured on this machine; the "
                         "slope is noisy at small sphere counts");
   return sweep;

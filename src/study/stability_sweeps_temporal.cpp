@@ -79,6 +79,20 @@ SweepResult influence_fade(const StabilityOptions& options) {
       const FadeScore twin = score_fade(method, exact, distance_r, open, eta);
       add_point(sweep, "hyb", name, eta, 0, twin.step);
       add_point(sweep, "hyb", name, eta, 1, twin.missing);
+      // The baselines: scalar AO (the same influence fade) and the vertex method's interpolation.
+      for (const char* baseline : {"ao", "vertex"}) {
+        std::vector<double> blocked;
+        for (int t = 0; t < frames; ++t) {
+          const std::span<const render::Sphere> one = spheres[std::size_t(t)];
+          const MethodShade shade = std::string(baseline) == "ao" ? shade_ambient_occlusion(tables, glm::vec3(0.0f), kUp, one)
+                                                                  : shade_vertex_ground(tables, kTau, glm::vec3(0.0f), one);
+          count_output(sweep, shade);
+          blocked.push_back(shade.unshadowed - shade.value);
+        }
+        const FadeScore score = score_fade(blocked, exact, distance_r, open, eta);
+        add_point(sweep, baseline, std::string(baseline) + ", " + name, eta, 0, score.step);
+        add_point(sweep, baseline, std::string(baseline) + ", " + name, eta, 1, score.missing);
+      }
       if (setting == settings::kEtaFromLighting)
         sweep.notes.push_back(name + ": eta = " + fixed(eta, 2) + " (c_L = " + fixed(double(eta) * eta * settings::kEtaCutoffError, 2) + ")");
       // The GPU frame's passes at the default and the automatic η: the shadow gather and the raster
