@@ -177,15 +177,19 @@ fig.tight_layout()
 fig.savefig(sys.argv[1], dpi=100, format="png")
 )PY";
 
-nlohmann::json traces_json(const study::SweepResult& sweep) {
-  nlohmann::json json = {{"id", sweep.id}, {"title", sweep.title}, {"x_label", sweep.trace_x_label}, {"log_x", sweep.trace_log_x}};
-  json["traces"] = nlohmann::json::array();
+nlohmann::json traces_array(const study::SweepResult& sweep) {
+  nlohmann::json traces = nlohmann::json::array();
   for (const study::SweepTrace& t : sweep.traces) {
     nlohmann::json ys = nlohmann::json::array();
     for (double y : t.y) ys.push_back(json_number(y));
-    json["traces"].push_back({{"panel", t.panel}, {"series", t.series}, {"x", t.x}, {"y", ys}});
+    traces.push_back({{"panel", t.panel}, {"series", t.series}, {"x", t.x}, {"y", ys}});
   }
-  return json;
+  return traces;
+}
+
+nlohmann::json traces_json(const study::SweepResult& sweep) {
+  return {{"id", sweep.id}, {"title", sweep.title}, {"x_label", sweep.trace_x_label}, {"log_x", sweep.trace_log_x},
+          {"traces", traces_array(sweep)}};
 }
 
 nlohmann::json heat_maps_json(const study::SweepResult& sweep) {
@@ -214,6 +218,8 @@ nlohmann::json sweep_json(const study::SweepResult& sweep) {
   json["bounds"] = {{"outputs", b.pixels}, {"negative", b.negative}, {"over_unshadowed", b.over_unshadowed},
                     {"non_finite", b.non_finite}, {"max_overshoot_u", b.max_overshoot_u}, {"min_value", b.min_value}};
   json["notes"] = sweep.notes;
+  json["trace_x_label"] = sweep.trace_x_label;
+  json["traces"] = traces_array(sweep);  // the curves of stability-<id>-traces.png
   return json;
 }
 
