@@ -54,7 +54,9 @@ int run_compare_sequence(const SequenceCompareArgs& args) {
   for (int frame = range->first; frame <= range->last; ++frame) {
     for (auto [dir, planes] : {std::pair{&args.test_dir, &test}, std::pair{&args.reference_dir, &reference}}) {
       auto plane = luminance_of(frame_file(*dir, frame));
-      if (!plane) return fail_bad_input("compare --sequence: " + plane.message());
+      if (!plane)
+        return fail_bad_input("compare --sequence: " + plane.message() +
+                              " (the frames are linear radiance: record --exr, or reference -o DIR/frame_NNNNN.exr per frame)");
       planes->push_back(std::move(*plane));
     }
     if (test.back().width != test.front().width || test.back().height != test.front().height ||
