@@ -26,10 +26,7 @@ Result<ref::Plane> luminance_of(const std::string& path) {
   if (!image) return image.error();
   ref::Plane plane(image->width, image->height);
   for (int y = 0; y < image->height; ++y)
-    for (int x = 0; x < image->width; ++x) {
-      const glm::vec4 c = image->at(x, y);
-      plane.at(x, y) = 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
-    }
+    for (int x = 0; x < image->width; ++x) plane.at(x, y) = image::rec709_luminance<float>(image->at(x, y));
   return plane;
 }
 

@@ -256,11 +256,7 @@ Result<std::vector<DrawItem>> SceneRenderer::prepare(const FrameRequest& request
   const scene::CameraState& camera = state->camera;
   const FrameConfig& config = frame_->config();
   const float aspect = float(config.width) / float(config.height);
-  FrameView view;
-  view.view = scene::view_matrix(camera);
-  view.projection = scene::projection_matrix(camera, aspect);
-  view.eye = camera.eye;
-  view.forward = glm::normalize(camera.target - camera.eye);
+  FrameView view = frame_view(camera, aspect);
   view.debug_view = request.debug_view;
   // render.proxy_lod auto: each character's level by its size on screen (world/proxy_lod.h).
   const std::vector<render::Sphere>* streamed = &state->spheres;

@@ -90,6 +90,15 @@ Status SoftGiFrame::apply(const FrameConfig& config, const render::FrameTables& 
   return applied;
 }
 
+FrameView frame_view(const scene::CameraState& camera, float aspect) {
+  FrameView view;
+  view.view = scene::view_matrix(camera);
+  view.projection = scene::projection_matrix(camera, aspect);
+  view.eye = camera.eye;
+  view.forward = glm::normalize(camera.target - camera.eye);
+  return view;
+}
+
 Status SoftGiFrame::write_slot(std::uint32_t slot, const FrameView& view, std::span<const render::Sphere> spheres) {
   if (slot >= slots_.size()) return make_error("frame: slot " + std::to_string(slot) + " out of range");
   if (spheres.size() > gpu_layout::kMaxProxies)

@@ -28,6 +28,7 @@
 #include "image/image.h"
 #include "render/frame_tables.h"
 #include "render/shading.h"
+#include "scene/camera.h"
 
 namespace proxygi::gpu_layout {
 struct VsglLight;
@@ -50,6 +51,8 @@ struct FrameView {
   glm::vec3 forward{0.0f, 0.0f, -1.0f};  // unit image-plane normal
   std::uint32_t debug_view = 0;           // gpu_layout::kDebugView* (the viewer's views); 0: final
 };
+// The view of a scene camera at aspect width / height (debug_view 0).
+FrameView frame_view(const scene::CameraState& camera, float aspect);
 
 class SoftGiFrame {
  public:

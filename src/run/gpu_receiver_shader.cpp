@@ -4,6 +4,7 @@
 
 #include "gpu/draw_item.h"
 #include "gpu/soft_gi_frame.h"
+#include "image/image.h"
 #include "scene/camera.h"
 
 namespace proxygi::run {
@@ -12,8 +13,6 @@ namespace {
 constexpr std::uint32_t kSize = 15;  // odd: the centre pixel's ray passes through the camera's target
 constexpr std::uint32_t kCentre = kSize / 2;
 constexpr float kReceiverTolerance = 0.0025f;  // m: how far the centre receiver may lie from the origin
-
-double luminance(const glm::vec4& e) { return 0.2126 * e.r + 0.7152 * e.g + 0.0722 * e.b; }
 
 class FrameReceiverShader final : public study::GpuReceiverShader {
  public:
@@ -35,18 +34,14 @@ class FrameReceiverShader final : public study::GpuReceiverShader {
     camera.eye = glm::vec3(0.0f, 2.0f, 0.5f);
     camera.target = glm::vec3(0.0f);
     camera.fov_y_degrees = 2.0f;
-    gpu::FrameView view;
-    view.view = scene::view_matrix(camera);
-    view.projection = scene::projection_matrix(camera, 1.0f);
-    view.eye = camera.eye;
-    view.forward = glm::normalize(camera.target - camera.eye);
+    const gpu::FrameView view = gpu::frame_view(camera, 1.0f);
     auto render = [&](std::span<const render::Sphere> spheres) -> Result<double> {
       if (Status written = (*frame)->write_slot(0, view, spheres); !written) return written.error();
       if (Status done = context_.submit_and_wait([&](VkCommandBuffer c) { (*frame)->record(c, 0, draws, gpu::FrameOutput::readback()); }); !done)
         return done.error();
       auto direct = (*frame)->read_direct();
       if (!direct) return direct.error();
-      return luminance(direct->at(int(kCentre), int(kCentre)));
+      return image::rec709_luminance(direct->at(int(kCentre), int(kCentre)));
     };
     auto open = render({});
     if (!open) return open.error();

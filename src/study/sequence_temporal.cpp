@@ -37,8 +37,9 @@ void accumulate(ErrorSummary& total, const ErrorSummary& one, std::size_t& terms
   ++terms;
 }
 
+// E_Δ, pop and the reference's mean over one region (the flicker is scored once, score_sequence).
 TemporalScores score_region(std::span<const ref::Plane> test, std::span<const ref::Plane> reference, const TracedSequence& sequence,
-                            const std::vector<std::vector<Reprojection>>& to_previous_next, const std::vector<Reprojection>& from_first,
+                            const std::vector<std::vector<Reprojection>>& to_previous_next,
                             const std::vector<std::vector<std::uint8_t>>& region) {
   TemporalScores scores;
   const std::size_t n = sequence.frames.size();
@@ -63,21 +64,6 @@ TemporalScores score_region(std::span<const ref::Plane> test, std::span<const re
   scores.reference_mean = count > 0 ? sum / double(count) : 0.0;
   if (gradient_terms > 0) scores.gradient.mean /= double(gradient_terms);
   if (pop_terms > 0) scores.pop.mean /= double(pop_terms);
-  // Flicker: the static world's points only (a character's shading changes with its pose).
-  std::vector<Reprojection> static_points;
-  for (const Reprojection& r : from_first) {
-    std::vector<std::uint8_t> keep(region[0].size());
-    for (std::size_t i = 0; i < keep.size(); ++i) keep[i] = region[0][i] && !sequence.frames[0].character[i];
-    static_points.push_back(restricted(r, keep));
-  }
-  std::vector<ref::Plane> error;
-  for (std::size_t t = 0; t < n; ++t) {
-    error.push_back(test[t]);
-    for (std::size_t i = 0; i < error.back().values.size(); ++i) error.back().values[i] -= reference[t].values[i];
-  }
-  scores.flicker_test = flicker(test, static_points);
-  scores.flicker_reference = flicker(reference, static_points);
-  scores.flicker_error = flicker(error, static_points);
   return scores;
 }
 
@@ -154,8 +140,6 @@ Result<SequenceScores> score_sequence(std::span<const ref::Plane> test, std::spa
     to_previous_next[t].push_back(t > 0 ? reproject_exact(sequence, t, t - 1) : Reprojection{});
     to_previous_next[t].push_back(t + 1 < n ? reproject_exact(sequence, t, t + 1) : Reprojection{});
   }
-  std::vector<Reprojection> from_first;
-  for (std::size_t t = 0; t < n; ++t) from_first.push_back(reproject_exact(sequence, 0, t));
   auto region = [&](int which) {  // 0 all, 1 character, 2 static world
     std::vector<std::vector<std::uint8_t>> masks;
     for (const SequenceFrame& f : sequence.frames) {
@@ -167,9 +151,25 @@ Result<SequenceScores> score_sequence(std::span<const ref::Plane> test, std::spa
     return masks;
   };
   SequenceScores scores;
-  scores.all = score_region(test, reference, sequence, to_previous_next, from_first, region(0));
-  scores.character = score_region(test, reference, sequence, to_previous_next, from_first, region(1));
-  scores.static_world = score_region(test, reference, sequence, to_previous_next, from_first, region(2));
+  const std::vector<std::vector<std::uint8_t>> static_world = region(2);
+  scores.all = score_region(test, reference, sequence, to_previous_next, region(0));
+  scores.character = score_region(test, reference, sequence, to_previous_next, region(1));
+  scores.static_world = score_region(test, reference, sequence, to_previous_next, static_world);
+  // Flicker: frame 0's static-world points seen in every frame (a character's shading changes with
+  // its pose, so the character region has none and "all" has the static world's).
+  std::vector<Reprojection> from_first;
+  for (std::size_t t = 0; t < n; ++t) from_first.push_back(restricted(reproject_exact(sequence, 0, t), static_world[0]));
+  std::vector<ref::Plane> error;
+  for (std::size_t t = 0; t < n; ++t) {
+    error.push_back(test[t]);
+    for (std::size_t i = 0; i < error.back().values.size(); ++i) error.back().values[i] -= reference[t].values[i];
+  }
+  scores.static_world.flicker_test = flicker(test, from_first);
+  scores.static_world.flicker_reference = flicker(reference, from_first);
+  scores.static_world.flicker_error = flicker(error, from_first);
+  scores.all.flicker_test = scores.static_world.flicker_test;
+  scores.all.flicker_reference = scores.static_world.flicker_reference;
+  scores.all.flicker_error = scores.static_world.flicker_error;
   return scores;
 }
 

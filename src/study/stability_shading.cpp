@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "base/check.h"
 #include "image/image.h"
 #include "render/baselines.h"
 #include "render/ground_grid.h"
@@ -145,6 +146,16 @@ MethodShade shade_vertex_ground(const render::FrameTables& tables, float tau, co
   out.unshadowed = mixed.y;
   out.unclamped = mixed.z;
   return out;
+}
+
+MethodShade shade_ground_method(std::string_view method, const render::FrameTables& tables, float tau, const glm::vec3& p,
+                                std::span<const render::Sphere> spheres) {
+  const glm::vec3 up(0.0f, 1.0f, 0.0f);
+  if (method == "hyb") return shade_method(tables, tau, p, up, spheres);
+  if (method == "ol") return shade_method(tables, kOptimalLinearOnly, p, up, spheres);
+  if (method == "ao") return shade_ambient_occlusion(tables, p, up, spheres);
+  PROXYGI_CHECK(method == "vertex", "shade_ground_method: unknown method");
+  return shade_vertex_ground(tables, tau, p, spheres);
 }
 
 std::vector<float> product_space_visibility(const render::FrameTables& tables, const glm::vec3& p, const glm::vec3& normal,

@@ -3,6 +3,7 @@
 // (render/shading.h), and the exact answer for the same spheres and the same band-limited lighting.
 // Scalars are Rec. 709 luminance of irradiance E = ∫ L max(N·ω, 0) dω (not / π).
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -42,6 +43,10 @@ inline constexpr glm::vec2 kVertexGridOffset{0.37f, 0.61f};
 MethodShade shade_ambient_occlusion(const render::FrameTables& tables, const glm::vec3& p, const glm::vec3& normal,
                                     std::span<const render::Sphere> spheres);
 MethodShade shade_vertex_ground(const render::FrameTables& tables, float tau, const glm::vec3& p, std::span<const render::Sphere> spheres);
+// A ground receiver p (normal +Y) by the method of that name: "hyb" (τ = tau), "ol", "ao" or "vertex"
+// (HYB at τ = tau on the grid's vertices); any other name is a contract violation.
+MethodShade shade_ground_method(std::string_view method, const render::FrameTables& tables, float tau, const glm::vec3& p,
+                                std::span<const render::Sphere> spheres);
 // The same with an explicit log sum f (n² values).
 MethodShade shade_log_sum(const render::FrameTables& tables, float tau, std::span<const float> f, const glm::vec3& p,
                           const glm::vec3& normal);

@@ -33,16 +33,12 @@ SweepResult pass_through(const StabilityOptions& options) {
   for (const Path& path : paths) {
     const int steps = int(std::round(glm::length(path.to - path.from) / (r / 200.0f)));
     for (const char* name : {"hyb", "ol", "ao", "vertex"}) {
-      const std::string method = name;
       double previous_method = 0.0, previous_truth = 0.0, worst_step = 0.0, worst_error = 0.0;
       double worst_step_at = 0.0;
       for (int i = 0; i <= steps; ++i) {
         const glm::vec3 center = path.from + (path.to - path.from) * (float(i) / float(steps));
         const render::Sphere sphere{center, r, glm::vec3(0.8f)};
-        const std::span<const render::Sphere> one(&sphere, 1);
-        const MethodShade shade = method == "ao"       ? shade_ambient_occlusion(tables, p, kUp, one)
-                                  : method == "vertex" ? shade_vertex_ground(tables, kTau, p, one)
-                                                      : shade_method(tables, method == "hyb" ? kTau : kOptimalLinearOnly, p, kUp, one);
+        const MethodShade shade = shade_ground_method(name, tables, kTau, p, std::span(&sphere, 1));
         count_output(sweep, shade);
         const double exact = truth.shadowed_one(p, kUp, sphere);
         const double blocked_method = shade.unshadowed - shade.value, blocked_truth = open - exact;

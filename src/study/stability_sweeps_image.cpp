@@ -85,6 +85,9 @@ SweepResult silhouettes(const StabilityOptions& options) {
     auto label_at = [&](int x, int y) { return g.label[std::size_t(y * size + x)]; };
     const ref::ReceiverMask covered = ref::mask_where(size, size, [&](int x, int y) { return label_at(x, y) >= 0; });
     const ref::ReceiverMask poles = ref::mask_where(size, size, [&](int x, int y) { return g.is_pole(label_at(x, y)); });
+    std::vector<ref::ReceiverMask> each_pole;
+    for (int pole = 0; pole < g.poles; ++pole)
+      each_pole.push_back(ref::mask_where(size, size, [&](int x, int y) { return label_at(x, y) == g.pole_label(pole); }));
     // Silhouettes by label (sphere, pole, wall, ground or sky): at 16x the character stands only
     // 2.4 % of the eye depth before the ground, below any depth-jump threshold the near ground passes.
     const ref::ReceiverMask edge = mask_and_not(mask_and(label_edge_band_mask(size, size, g.label, 1), covered), poles);
@@ -110,7 +113,7 @@ SweepResult silhouettes(const StabilityOptions& options) {
         }
         SweepTrace by_width{"mean error on a pole against k = 1 (u), " + at_distance, std::string(kUpsamplerNames[u]) + " k=" + std::to_string(k), {}, {}};
         for (int pole = 0; pole < g.poles; ++pole) {
-          const ref::ReceiverMask one = ref::mask_where(size, size, [&](int x, int y) { return label_at(x, y) == g.pole_label(pole); });
+          const ref::ReceiverMask& one = each_pole[std::size_t(pole)];
           if (one.count() == 0) continue;
           by_width.x.push_back(double(kPoleWidthsPx[pole]) / k);
           by_width.y.push_back(absolute_error(test, reference, &one).mean);

@@ -83,9 +83,7 @@ SweepResult influence_fade(const StabilityOptions& options) {
       for (const char* baseline : {"ao", "vertex"}) {
         std::vector<double> blocked;
         for (int t = 0; t < frames; ++t) {
-          const std::span<const render::Sphere> one = spheres[std::size_t(t)];
-          const MethodShade shade = std::string(baseline) == "ao" ? shade_ambient_occlusion(tables, glm::vec3(0.0f), kUp, one)
-                                                                  : shade_vertex_ground(tables, kTau, glm::vec3(0.0f), one);
+          const MethodShade shade = shade_ground_method(baseline, tables, kTau, glm::vec3(0.0f), spheres[std::size_t(t)]);
           count_output(sweep, shade);
           blocked.push_back(shade.unshadowed - shade.value);
         }
