@@ -4,9 +4,11 @@
 // (exact, eq. 17) as "indirect.comp:<operator>" (render::IndirectOperator), and with 3 as
 // "indirect.comp:vsgl" (render.indirect_method vsgl: E_ind = Σ_k the closed form of
 // sh::vsgl_irradiance over the lights vsgl_lights.comp fitted, no visibility, no ξ_p; a = 0):
-//   point, averaged: E_ind = ξ_p Σ_i (albedo_i/π) max(κ_i, 0) max(V_i · H(N), 0), κ_i = rot(K, d_i) · L̃
+//   point, averaged: E_ind = ξ_p Σ_i (albedo_i/π) max(κ_i, 0) max(V_i · H(N), 0), κ_i = rot(K, d_i) · L̃_N
 //                    with K_l = D_l(s_i) or (−1)^l sqrt((2l+1)/4π) (then rot(K, d) = y(−d))
-//   exact:           E_ind = ξ_p Σ_i (albedo_i/π) max(H(N) · R⁻¹ M(s_i) R L̃, 0), M from binding 7
+//   exact:           E_ind = ξ_p Σ_i (albedo_i/π) max(H(N) · R⁻¹ M(s_i) R L̃_N, 0), M from binding 7
+// L̃_N: the receiver's sender light, the lighting above its tangent plane (sh/sender_light.h), read
+// from the cubes at binding 9 by N (L̃ in every texel when render.mask_sender_light is off).
 // ξ_p = clamp((V_p)_0 / (ω_p/√4π), 0, 1) with (V_p)_0 = √4π − (O_p)_0 from the exponentiation.
 // Output per receiver: (E_r, E_g, E_b, ω_p), and the packed (E_direct + E_indirect, eye depth)
 // upsampling reads. CPU twin: render::accumulate_indirect (exact: render/exact_indirect.h).
@@ -30,6 +32,28 @@ layout(std430, set = 0, binding = kIndirectBindShaded) writeonly buffer Shaded {
 #endif
 #if INDIRECT_OPERATOR == 2
 #include "indirect_exact.glsl"
+#endif
+#if INDIRECT_OPERATOR != 3
+#include "cube_taps.glsl"
+layout(std430, set = 0, binding = kIndirectBindSenderLight) readonly buffer SenderLight { float sender_light_cube[]; };
+
+// L̃_N of the three channels, bilinear in the cube face N hits (CPU twin render::sender_light).
+void sender_light(vec3 n, out vec3 light[9]) {
+  const int count = int(kIndirectOrder * kIndirectOrder);
+  int size = int(frame.lighting_cube_face_size);
+  CubeTaps taps = cube_map_taps(size, count, 0, n);
+  int channel_stride = 6 * size * size * count;
+  for (int i = 0; i < count; ++i) {
+    vec3 value;
+    for (int c = 0; c < 3; ++c) {
+      int offset = c * channel_stride + i;
+      float top = sender_light_cube[taps.t00 + offset] + taps.fx * (sender_light_cube[taps.t10 + offset] - sender_light_cube[taps.t00 + offset]);
+      float bottom = sender_light_cube[taps.t01 + offset] + taps.fx * (sender_light_cube[taps.t11 + offset] - sender_light_cube[taps.t01 + offset]);
+      value[c] = top + taps.fy * (bottom - top);
+    }
+    light[i] = value;
+  }
+}
 #endif
 #if INDIRECT_OPERATOR == 3
 layout(std430, set = 0, binding = kIndirectBindVsglLights) readonly buffer VsglLights {
@@ -110,6 +134,8 @@ void main() {
   float eta = frame.indirect_eta;
   float minimum_sine = 1.0 / eta;
   int rows = int(frame.visibility_table_rows);
+  vec3 light[9];
+  sender_light(normal, light);
   vec3 summed = vec3(0.0);
   float solid_angle_sum = 0.0;
   for (uint t = 0u; t < tile_proxy_count; ++t) {
@@ -126,7 +152,7 @@ void main() {
     exact_indirect_weights(sine, direction, normal, weights);
     vec3 radiance = vec3(0.0);
     for (int c = 0; c < 9; ++c)
-      radiance += weights[c] * vec3(frame.irradiance_sh[c].x, frame.irradiance_sh[9 + c].x, frame.irradiance_sh[18 + c].x);
+      radiance += weights[c] * light[c];
     summed += proxies[i].albedo.w * (proxies[i].albedo.rgb / kPi * max(radiance, vec3(0.0)));
 #else
     float basis[9];
@@ -145,7 +171,7 @@ void main() {
       for (int m = -l; m <= l; ++m) {
         int c = l * (l + 1) + m;
         band_normal += basis[c] * normal_basis[c];
-        band_light += basis[c] * vec3(frame.irradiance_sh[c].x, frame.irradiance_sh[9 + c].x, frame.irradiance_sh[18 + c].x);
+        band_light += basis[c] * light[c];
       }
       float scale = zonal_scale(l);
       seen_cosine += scale * visibility * scale * cosine[l] * band_normal;

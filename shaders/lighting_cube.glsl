@@ -9,37 +9,10 @@
 // receivers above the ground plane see the lit ground below their horizon.
 int lighting_cube_set(vec3 p) { return p.y > kGroundBounceMinHeight ? int(kGroundLitCubes) : 0; }
 
-// The four texels around N in the cube face it hits (first coefficient index of each) and the
-// bilinear fractions: shared by both lookups below.
-struct CubeTaps {
-  int t00, t10, t01, t11;
-  float fx, fy;
-};
+#include "cube_taps.glsl"
+
 CubeTaps lighting_cube_taps(int channel, vec3 n) {
-  vec3 a = abs(n);
-  int face;
-  float sc, tc, major;
-  if (a.x >= a.y && a.x >= a.z) {
-    face = n.x >= 0.0 ? 0 : 1; major = a.x; sc = n.x >= 0.0 ? -n.z : n.z; tc = -n.y;
-  } else if (a.y >= a.z) {
-    face = n.y >= 0.0 ? 2 : 3; major = a.y; sc = n.x; tc = n.y >= 0.0 ? n.z : -n.z;
-  } else {
-    face = n.z >= 0.0 ? 4 : 5; major = a.z; sc = n.z >= 0.0 ? n.x : -n.x; tc = -n.y;
-  }
-  int size = int(frame.lighting_cube_face_size);
-  float u = clamp((0.5 * (sc / major + 1.0)) * float(size) - 0.5, 0.0, float(size - 1));
-  float v = clamp((0.5 * (tc / major + 1.0)) * float(size) - 0.5, 0.0, float(size - 1));
-  int x0 = min(int(u), size - 1), y0 = min(int(v), size - 1);
-  int x1 = min(x0 + 1, size - 1), y1 = min(y0 + 1, size - 1);
-  int channel_base = channel * 6 * size * size * SH_COUNT;
-  CubeTaps taps;
-  taps.fx = u - float(x0);
-  taps.fy = v - float(y0);
-  taps.t00 = channel_base + ((face * size + y0) * size + x0) * SH_COUNT;
-  taps.t10 = channel_base + ((face * size + y0) * size + x1) * SH_COUNT;
-  taps.t01 = channel_base + ((face * size + y1) * size + x0) * SH_COUNT;
-  taps.t11 = channel_base + ((face * size + y1) * size + x1) * SH_COUNT;
-  return taps;
+  return cube_map_taps(int(frame.lighting_cube_face_size), SH_COUNT, channel, n);
 }
 
 // Coefficient i of LH(N), bilinear within the face.

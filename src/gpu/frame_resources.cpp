@@ -173,13 +173,17 @@ Status SoftGiFrame::upload_tables(const render::FrameTables& tables) {
   if (tables.settings.sh_order != config_.render.sh_order || tables.settings.shadow_eta != config_.render.shadow_eta ||
       tables.settings.indirect_eta != config_.render.indirect_eta ||
       tables.settings.sh_window != config_.render.sh_window ||
-      tables.settings.ground_bounce != config_.render.ground_bounce)
+      tables.settings.ground_bounce != config_.render.ground_bounce ||
+      tables.settings.mask_sender_light != config_.render.mask_sender_light)
     return make_error("frame: tables built for other table settings than the frame's");
   std::vector<glm::vec2> optimal_linear;
   for (int row = 0; row < tables.optimal_linear.rows(); ++row)
     optimal_linear.emplace_back(tables.optimal_linear.a[std::size_t(row)], tables.optimal_linear.b[std::size_t(row)]);
   std::vector<float> cubes;
   for (const auto& cube : tables.lighting_cube) cubes.insert(cubes.end(), cube.values.begin(), cube.values.end());
+  std::vector<float> sender_cubes;
+  for (const auto& cube : tables.sender_light_cube)
+    sender_cubes.insert(sender_cubes.end(), cube.values.begin(), cube.values.end());
   Tables uploaded;
   struct TableUpload {
     Buffer* buffer;
@@ -191,6 +195,7 @@ Status SoftGiFrame::upload_tables(const render::FrameTables& tables) {
       {&uploaded.exact_indirect, bytes_of(std::span<const float>(tables.exact_indirect.values))},
       {&uploaded.optimal_linear, bytes_of(std::span<const glm::vec2>(optimal_linear))},
       {&uploaded.lighting_cube, bytes_of(std::span<const float>(cubes))},
+      {&uploaded.sender_light, bytes_of(std::span<const float>(sender_cubes))},
   };
   for (const auto& upload : uploads) {
     auto made = create_buffer_with_data(context_, upload.bytes, kStorage);

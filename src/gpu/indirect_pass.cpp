@@ -15,7 +15,8 @@ Result<IndirectPass> IndirectPass::create(const Context& context, const settings
                                      {kIndirectBindIndirect, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                                      {kIndirectBindShaded, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                                      {kIndirectBindExactTable, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                                     {kIndirectBindVsglLights, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+                                     {kIndirectBindVsglLights, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                     {kIndirectBindSenderLight, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
   const std::string variant = render.indirect_method == settings::IndirectMethod::vsgl
                                   ? std::string("vsgl")
                                   : std::string(settings::name_of(render.indirect_operator));
@@ -28,8 +29,8 @@ Result<IndirectPass> IndirectPass::create(const Context& context, const settings
 
 std::vector<ResourceAccess> IndirectPass::accesses(const Inputs& in, const Outputs& out) const {
   return {reads(in.constants), reads(in.receivers),   reads(in.proxies),    reads(in.visibility_table),
-          reads(in.direct),    reads(in.exact_table), reads(in.vsgl_lights), writes(out.indirect),
-          writes(out.shaded)};
+          reads(in.direct),    reads(in.exact_table), reads(in.vsgl_lights), reads(in.sender_light),
+          writes(out.indirect), writes(out.shaded)};
 }
 
 void IndirectPass::record(const Context& context, VkCommandBuffer commands, const Inputs& in,
@@ -45,6 +46,7 @@ void IndirectPass::record(const Context& context, VkCommandBuffer commands, cons
       .storage_buffer(kIndirectBindShaded, *out.shaded)
       .storage_buffer(kIndirectBindExactTable, *in.exact_table)
       .storage_buffer(kIndirectBindVsglLights, *in.vsgl_lights)
+      .storage_buffer(kIndirectBindSenderLight, *in.sender_light)
       .push(context, commands, pipeline_);
   dispatch_grid(commands, in.receiver_width, in.receiver_height);
 }

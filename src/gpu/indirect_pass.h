@@ -1,6 +1,6 @@
 #pragma once
 // Indirect (frame step 6, indirect.comp, one variant per operator): bounce light from the proxies,
-// Σ_i κ_i (V_i · H(N)) normalized by ξ_p (eq. 12), and the packed shaded buffer (E_direct +
+// Σ_i κ_i (V_i · H(N)) normalized by ξ_p (eq. 12), κ_i from the receiver's sender light L̃_N, and the packed shaded buffer (E_direct +
 // E_indirect, eye depth) the upsampler reads. CPU twin: render::accumulate_indirect.
 // indirect_method vsgl: the variant "indirect.comp:vsgl" sums the closed form of the VSGL lights
 // (vsgl_lights_pass.h) instead; CPU twin sh::vsgl_irradiance.
@@ -21,6 +21,7 @@ class IndirectPass {
     const Buffer* direct = nullptr;            // exponentiate's output
     const Buffer* exact_table = nullptr;       // M(s) rows (read by the exact variant only)
     const Buffer* vsgl_lights = nullptr;       // VsglLightsPass's lights (read by the vsgl variant only)
+    const Buffer* sender_light = nullptr;      // L̃_N cubes, r g b (FrameTables::sender_light_cube; not vsgl)
     std::uint32_t receiver_width = 0, receiver_height = 0;
   };
   struct Outputs {

@@ -241,7 +241,7 @@ void SoftGiFrame::record_pass(VkCommandBuffer commands, std::uint32_t slot_index
       }
       run(*passes_.indirect,
           IndirectPass::Inputs{&slot.constants, &t.receivers, &slot.proxies, &tables_.visibility_table, &t.direct,
-                               &tables_.exact_indirect, &t.vsgl_lights, rw, rh},
+                               &tables_.exact_indirect, &t.vsgl_lights, &tables_.sender_light, rw, rh},
           IndirectPass::Outputs{&t.indirect, &t.shaded});
       break;
     case FramePass::upsample_composite: {

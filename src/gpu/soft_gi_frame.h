@@ -161,7 +161,7 @@ class SoftGiFrame {
     Buffer positions, triangles, grid, records, visibility;  // layouts.h kExponentiateBindStatic*
   };
   struct Tables {
-    Buffer log_table, visibility_table, optimal_linear, lighting_cube, exact_indirect;
+    Buffer log_table, visibility_table, optimal_linear, lighting_cube, exact_indirect, sender_light;
     float log_table_rows = 0, visibility_rows = 0, optimal_linear_rows = 0, optimal_linear_max = 0, cube_size = 0;
     float shadow_eta = 0;  // render::FrameTables::shadow_eta (resolved when the setting is auto)
     std::array<std::array<float, 9>, 3> irradiance_order3{};

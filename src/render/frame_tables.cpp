@@ -9,6 +9,7 @@
 #include "sh/basis.h"
 #include "sh/convolution.h"
 #include "sh/ground_bounce.h"
+#include "sh/sender_light.h"
 #include "sh/influence_eta.h"
 #include "sh/vsgl_sun.h"
 
@@ -90,6 +91,18 @@ FrameTables make_frame_tables(const sh::RgbSh& lighting, const settings::RenderS
   const std::vector<double> cosine = sh::clamped_cosine_zonal(3);
   for (int channel = 0; channel < 3; ++channel)
     tables.irradiance_order3[std::size_t(channel)] = order3_irradiance(tables.lighting.channels[std::size_t(channel)], cosine);
+  for (int channel = 0; channel < 3; ++channel) {
+    sh::LightingCubeMap& sender = tables.sender_light_cube[std::size_t(channel)];
+    if (settings.mask_sender_light) {
+      sender = sh::make_sender_light_cube(order, tables.lighting.channels[std::size_t(channel)], resolution.cube_face_size);
+      continue;
+    }
+    // Unmasked: L̃ in every texel, so the lookup returns it exactly (bilinear of equal values).
+    const auto& irradiance = tables.irradiance_order3[std::size_t(channel)];
+    sender = {3, resolution.cube_face_size, {}};
+    for (int texel = 0; texel < 6 * resolution.cube_face_size * resolution.cube_face_size; ++texel)
+      sender.values.insert(sender.values.end(), irradiance.begin(), irradiance.end());
+  }
 
   tables.vsgl_sender_order3 = tables.irradiance_order3;
   const sh::SunLight sun_light{glm::dvec3(sun.direction), glm::dvec3(sun.irradiance)};

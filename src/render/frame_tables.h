@@ -3,7 +3,8 @@
 // settings on the CPU (and uploaded by the GPU frame): the log-occlusion and proxy-visibility ZH
 // tables with the sphere-of-influence fade, the OL (a, b) table, the LH(N) cube maps (one per
 // colour channel), the order-3 irradiance vector L̃ = L * clamped cosine for indirect light and the
-// exact indirect operator M(s) (order 3, faded like the visibility table).
+// exact indirect operator M(s) (order 3, faded like the visibility table), and the proxies' sender
+// light by receiver normal (sh/sender_light.h).
 // Lighting is the environment's SH projection with the ringing window applied. With the ground
 // bounce (render.ground_bounce and a ground), receivers above the ground plane read a second set
 // of LH cubes built from the ground-lit lighting L' (sh/ground_bounce.h): L above the horizon,
@@ -62,6 +63,10 @@ struct FrameTables {
   sh::RgbSh ground_lit;                  // L' (a copy of `lighting` when the bounce is off)
   glm::vec3 ground_radiance{0.0f};       // g = ρ E_g / π per channel (0 when the bounce is off)
   std::array<std::array<float, 9>, 3> irradiance_order3;  // L̃ per channel, order 3
+  // The proxies' sender light by receiver normal N, per channel (order 3, 9 values per texel,
+  // sh/sender_light.h): L̃_N of the lighting above the receiver's tangent plane, or L̃ in every
+  // texel when settings.mask_sender_light is off. The indirect pass reads it in place of L̃.
+  std::array<sh::LightingCubeMap, 3> sender_light_cube;
   // The VSGL sun variant: on when settings.vsgl_sun is auto and the sun is above the horizon
   // (the frame uses it with indirect_method vsgl). The vertex VPLs are then lit by the L̃ of
   // lighting − L_sun (windowed like lighting) and the sun's share comes from the sun map.
@@ -72,7 +77,8 @@ struct FrameTables {
 };
 
 // `lighting` is the unwindowed SH projection of the environment (order ≥ settings.sh_order). Reads
-// the table settings of `settings` (sh_order, shadow_eta, indirect_eta, sh_window, ground_bounce).
+// the table settings of `settings` (sh_order, shadow_eta, indirect_eta, sh_window, ground_bounce,
+// mask_sender_light).
 // `ground`: the scene's ground (no ground: the ground-lit cubes equal the others).
 // `sun`: the scene's sun (sh/vsgl_sun.h); without one, vsgl_sun is off.
 FrameTables make_frame_tables(const sh::RgbSh& lighting, const settings::RenderSettings& settings,

@@ -114,6 +114,12 @@ DirectResult exponentiate_and_shade(const FrameTables& tables, std::span<const f
   return result;
 }
 
+std::array<std::array<float, 9>, 3> sender_light(const FrameTables& tables, const glm::vec3& normal) {
+  std::array<std::array<float, 9>, 3> light{};
+  for (std::size_t c = 0; c < 3; ++c) lookup_lighting_cube(tables.sender_light_cube[c], normal, light[c]);
+  return light;
+}
+
 IndirectResult accumulate_indirect(const FrameTables& tables, const glm::vec3& p, const glm::vec3& normal,
                                    std::span<const Sphere> spheres, float occlusion_dc, settings::IndirectOperator op) {
   IndirectResult result;
@@ -121,6 +127,7 @@ IndirectResult accumulate_indirect(const FrameTables& tables, const glm::vec3& p
   sh::evaluate_basis(3, normal, std::span<float>(normal_basis, 9));
   const float cosine[3] = {0.886226925f, 1.023326708f, 0.495415912f};  // clamped cosine h_l
   const float minimum_sine = 1.0f / tables.settings.indirect_eta;
+  const std::array<std::array<float, 9>, 3> light = sender_light(tables, normal);
   glm::vec3 summed(0.0f);
   for (const Sphere& sphere : spheres) {
     if (outside_influence(p, sphere, tables.settings.indirect_eta)) continue;
@@ -131,7 +138,7 @@ IndirectResult accumulate_indirect(const FrameTables& tables, const glm::vec3& p
       const std::array<float, 9> weights = exact_indirect_weights(tables.exact_indirect, seen->sine, seen->direction, normal);
       glm::vec3 radiance(0.0f);
       for (int i = 0; i < 9; ++i)
-        for (int c = 0; c < 3; ++c) radiance[c] += weights[std::size_t(i)] * tables.irradiance_order3[std::size_t(c)][std::size_t(i)];
+        for (int c = 0; c < 3; ++c) radiance[c] += weights[std::size_t(i)] * light[std::size_t(c)][std::size_t(i)];
       summed += sphere.weight * (sphere.albedo / kPi * glm::max(radiance, glm::vec3(0.0f)));
     } else {
       float visibility[3];
@@ -151,7 +158,7 @@ IndirectResult accumulate_indirect(const FrameTables& tables, const glm::vec3& p
         for (int m = -l; m <= l; ++m) {
           const int i = l * (l + 1) + m;
           band_normal += basis[i] * normal_basis[i];
-          for (int c = 0; c < 3; ++c) band_light[c] += basis[i] * tables.irradiance_order3[std::size_t(c)][std::size_t(i)];
+          for (int c = 0; c < 3; ++c) band_light[c] += basis[i] * light[std::size_t(c)][std::size_t(i)];
         }
         const float scale = zonal_scale(l);
         seen_cosine += scale * visibility[l] * scale * cosine[l] * band_normal;

@@ -50,7 +50,12 @@ DirectResult exponentiate_and_shade(const FrameTables& tables, std::span<const f
 // face edges). out holds n² values.
 void lookup_lighting_cube(const sh::LightingCubeMap& cube, const glm::vec3& normal, std::span<float> out);
 
-// How a proxy's radiance I_i is formed from the order-3 irradiance L̃ (paper §5; sh/indirect.h).
+// The proxies' sender light for a receiver with unit normal N: L̃_N per channel (order 3) from
+// tables.sender_light_cube, bilinear like lookup_lighting_cube (sh/sender_light.h).
+std::array<std::array<float, 9>, 3> sender_light(const FrameTables& tables, const glm::vec3& normal);
+
+// How a proxy's radiance I_i is formed from the order-3 sender light L̃_N (paper §5 with L̃;
+// sh/indirect.h, sh/sender_light.h).
 // Each is its own compiled variant of indirect.comp ("indirect.comp:<name>").
 //   point     eq. 13: I_i = κ_i V_i, κ_i = L̃ · y(−d̂_i)           (radiance at the proxy centre's back)
 //   averaged  eq. 15: I_i = κ_i V_i, κ_i = rot(D(s_i), d̂_i) · L̃   (D by the paper's polynomial fit)

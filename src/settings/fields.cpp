@@ -148,6 +148,9 @@ const std::vector<Field>& table() {
       choice<&S::vsgl_sun>("vsgl_sun", "vsgl: the sun's bounce from a reflective shadow map (auto: sun above the horizon) or off",
                            kNeedPipelines | kNeedTables, kVsglSunChoices),
       boolean<&S::ground_bounce>("ground_bounce", "light bounced off the lit ground onto receivers above it", kNeedTables),
+      boolean<&S::mask_sender_light>("mask_sender_light",
+                                     "proxies reflect only the light from above the receiver's tangent plane (false: the whole environment)",
+                                     kNeedTables),
       choice<&S::tonemap>("tonemap", "display curve", kNeedConstants, kTonemapChoices),
       real<&S::exposure_ev>("exposure_ev", "exposure in stops before the tonemap", kNeedConstants, -kInfinity, -8.0, 8.0),
       // Tables: the static receivers' records are baked for the frame's lighting with the tables.
@@ -168,11 +171,11 @@ const std::vector<Field>& table() {
 [[maybe_unused]] void every_member_has_a_row(const RenderSettings& settings) {
   const auto& [method, sh_order, receiver_scale, shadow_eta, indirect_eta, sh_window, indirect_operator, exponential,
                hyb_tau, upsampling, bilateral_depth_epsilon, splat, indirect_method, vsgl_lights, vsgl_grouping,
-               vsgl_sun, ground_bounce, tonemap, exposure_ev, static_transfer, antialiasing,
+               vsgl_sun, ground_bounce, mask_sender_light, tonemap, exposure_ev, static_transfer, antialiasing,
                proxy_lod, quality] = settings;
   (void)method, (void)sh_order, (void)receiver_scale, (void)shadow_eta, (void)indirect_eta, (void)sh_window;
   (void)indirect_operator, (void)exponential, (void)hyb_tau, (void)upsampling, (void)bilateral_depth_epsilon;
-  (void)splat, (void)indirect_method, (void)vsgl_lights, (void)vsgl_grouping, (void)vsgl_sun, (void)ground_bounce, (void)tonemap;
+  (void)splat, (void)indirect_method, (void)vsgl_lights, (void)vsgl_grouping, (void)vsgl_sun, (void)ground_bounce, (void)mask_sender_light, (void)tonemap;
   (void)exposure_ev, (void)static_transfer, (void)antialiasing, (void)proxy_lod, (void)quality;
 }
 

@@ -134,6 +134,9 @@ struct RenderSettings {
   // Receivers above the ground plane see the lit ground (albedo × its unshadowed irradiance / π)
   // below their horizon instead of the environment's below-horizon radiance (sh/ground_bounce.h).
   bool ground_bounce = true;
+  // Proxies reflect only the light from above each receiver's tangent plane (sh/sender_light.h);
+  // false: the whole environment, as the paper's eq. 13–17.
+  bool mask_sender_light = true;
   Tonemap tonemap = Tonemap::aces;
   float exposure_ev = 0.0f;     // radiance × 2^exposure_ev before the tonemap
   StaticTransfer static_transfer = StaticTransfer::l0;  // l0 until measured better (README)

@@ -10,8 +10,11 @@
 #include "render/frame_tables.h"
 #include "render/shading.h"
 #include "sh/basis.h"
+#include "sh/convolution.h"
+#include "sh/environment.h"
 #include "sh/indirect.h"
 #include "sh/rotation.h"
+#include "sh/sender_light.h"
 
 namespace proxygi::render {
 namespace {
@@ -135,6 +138,9 @@ TEST(RenderIndirectTwin, EachOperatorMatchesItsDoubleOperatorForOneProxy) {
   settings::RenderSettings settings;
   settings.sh_order = 3;
   settings.sh_window = false;
+  // The paper's sender light (L̃ for every receiver): the tolerances below are the operators'
+  // relative errors on a well-lit proxy; the masked light leaves the proxy overhead too dim for them.
+  settings.mask_sender_light = false;
   sh::RgbSh sky;
   sky.order = 3;
   // L̃ = L * clamped cosine: pick L so that L̃ = kLighting (times a per-channel factor).
@@ -166,11 +172,12 @@ TEST(RenderIndirectTwin, EachOperatorMatchesItsDoubleOperatorForOneProxy) {
     const Case cases[] = {{settings::IndirectOperator::point, sh::point_indirect_operator(3, s), 1e-4},
                           {settings::IndirectOperator::exact, sh::exact_indirect_operator(3, s), 1e-3},
                           {settings::IndirectOperator::averaged, sh::averaged_indirect_operator(3, s), 5e-3}};
+    const auto light = sender_light(tables, glm::vec3(normal));
     for (const Case& test : cases) {
       const IndirectResult twin = accumulate_indirect(tables, glm::vec3(0.0f), glm::vec3(normal), std::span<const Sphere>(&sphere, 1), 0.0f, test.op);
       for (int c = 0; c < 3; ++c) {
         Eigen::VectorXd lighting(9);
-        for (int i = 0; i < 9; ++i) lighting(i) = tables.irradiance_order3[std::size_t(c)][std::size_t(i)];
+        for (int i = 0; i < 9; ++i) lighting(i) = light[std::size_t(c)][std::size_t(i)];
         const Eigen::VectorXd radiance = rotation.transpose() * (test.canonical * (rotation * lighting));
         double shade = 0.0;
         for (int i = 0; i < 9; ++i) shade += h[std::size_t(i)] * radiance(i);
@@ -185,9 +192,11 @@ TEST(RenderIndirectTwin, EachOperatorMatchesItsDoubleOperatorForOneProxy) {
 
 TEST(RenderIndirectTwin, AllOperatorsAgreeUnderConstantRadiance) {
   // Constant L̃: the proxy shines the same over its whole cap, so point, averaged and exact give
-  // the same I = L̃_0 y_0 V (up to the D_0 fit, 1.7e-5 relative, and table rounding).
+  // the same I = L̃_0 y_0 V (up to the D_0 fit, 1.7e-5 relative, and table rounding). The sender
+  // light is unmasked: above a receiver's plane a constant sky is no longer constant.
   settings::RenderSettings settings;
   settings.sh_order = 3;
+  settings.mask_sender_light = false;
   sh::RgbSh sky;
   sky.order = 3;
   for (auto& channel : sky.channels) channel.assign(9, 0.0);
@@ -210,6 +219,53 @@ TEST(RenderIndirectTwin, AllOperatorsAgreeUnderConstantRadiance) {
       if (averaged.irradiance.r > 1e-3f) ++lit;
     }
   EXPECT_GE(lit, 10);
+}
+
+// The sender light the indirect twin reads (render::sender_light, FrameTables::sender_light_cube):
+// at a texel centre the cube holds L̃_N = A_l (L U_N) of the frame's (windowed) lighting; between
+// texels it interpolates within 1 % of the exact value; off (render.mask_sender_light false), it is
+// L̃ exactly at any normal, the paper's sender.
+TEST(RenderIndirectTwin, SenderLightIsTheLightingAboveTheReceiversPlane) {
+  settings::RenderSettings settings;
+  sh::RgbSh sky;
+  sky.order = 4;
+  for (int c = 0; c < 3; ++c) {
+    sky.channels[std::size_t(c)].assign(16, 0.0);
+    sky.channels[std::size_t(c)][0] = 3.5 + c;
+    sky.channels[std::size_t(c)][2] = 1.5;   // brighter above
+    sky.channels[std::size_t(c)][3] = -0.8;  // and to one side
+    sky.channels[std::size_t(c)][6] = 0.4;
+  }
+  const FrameTables tables = make_frame_tables(sky, settings);
+  const std::vector<double> cosine = sh::clamped_cosine_zonal(3);
+  auto exact = [&](int c, const glm::dvec3& n) {
+    std::vector<double> light = sh::project_above_plane(4, tables.lighting.channels[std::size_t(c)], n, 3);
+    sh::convolve_zonal(3, cosine, light);
+    return light;
+  };
+  const int size = tables.sender_light_cube[0].face_size;
+  const glm::dvec3 centre = sh::cube_map_direction(4, 3, 5, size);
+  const auto at_centre = sender_light(tables, glm::vec3(centre));
+  for (int c = 0; c < 3; ++c) {
+    const std::vector<double> expected = exact(c, centre);
+    for (int i = 0; i < 9; ++i)
+      EXPECT_NEAR(at_centre[std::size_t(c)][std::size_t(i)], expected[std::size_t(i)], 1e-5 * std::abs(expected[0])) << c << " " << i;
+  }
+  for (const glm::dvec3& n : {glm::normalize(glm::dvec3(0.3, 0.9, -0.2)), glm::normalize(glm::dvec3(-1, 0.1, 0.45)),
+                              glm::normalize(glm::dvec3(0.2, -1, 0.7))}) {
+    const auto between = sender_light(tables, glm::vec3(n));
+    for (int c = 0; c < 3; ++c) {
+      const std::vector<double> expected = exact(c, n);
+      for (int i = 0; i < 9; ++i)
+        EXPECT_NEAR(between[std::size_t(c)][std::size_t(i)], expected[std::size_t(i)], 0.01 * std::abs(expected[0])) << c << " " << i;
+    }
+    // The masked light differs from L̃ by far more than the interpolation.
+    EXPECT_GT(std::abs(between[0][0] - tables.irradiance_order3[0][0]), 0.1 * std::abs(tables.irradiance_order3[0][0]));
+  }
+  settings.mask_sender_light = false;
+  const FrameTables paper = make_frame_tables(sky, settings);
+  for (const glm::vec3& n : {glm::vec3(0, 1, 0), glm::normalize(glm::vec3(0.3f, -0.4f, 0.8f))})
+    EXPECT_EQ(sender_light(paper, n), paper.irradiance_order3);
 }
 
 }  // namespace
