@@ -17,11 +17,11 @@ using nlohmann::json;
 [[maybe_unused]] void every_row_member_is_carried(const study::ChartRow& row) {
   const auto& [scene, method, sh_order, receiver_scale, upsampling, indirect, samples, milliseconds, relative_mse, rmse,
                ssim, flip, character_relative_mse, character_luminance_ratio, regions, ground_bounce, antialiasing,
-               static_transfer, quality, quality_target, frames, pareto, is_default] = row;
+               static_transfer, mask_sender_light, quality, quality_target, frames, pareto, is_default] = row;
   (void)scene, (void)method, (void)sh_order, (void)receiver_scale, (void)upsampling, (void)indirect, (void)samples;
   (void)milliseconds, (void)relative_mse, (void)rmse, (void)ssim, (void)flip, (void)character_relative_mse;
   (void)character_luminance_ratio, (void)regions, (void)ground_bounce, (void)antialiasing, (void)static_transfer;
-  (void)quality, (void)quality_target, (void)frames, (void)pareto, (void)is_default;
+  (void)mask_sender_light, (void)quality, (void)quality_target, (void)frames, (void)pareto, (void)is_default;
 }
 
 // Region sums exactly as measured (the merge's means and ratios then equal a single run's).
@@ -49,7 +49,8 @@ json row_json(const study::ChartRow& row) {
           {"rmse", row.rmse},          {"ssim", row.ssim},       {"flip", row.flip},
           {"character_relative_mse", row.character_relative_mse},
           {"character_luminance_ratio", row.character_luminance_ratio},
-          {"ground_bounce", row.ground_bounce}, {"static_transfer", row.static_transfer}, {"default", row.is_default}};
+          {"ground_bounce", row.ground_bounce}, {"static_transfer", row.static_transfer},
+          {"mask_sender_light", row.mask_sender_light}, {"default", row.is_default}};
   if (!row.antialiasing.empty()) out["antialiasing"] = row.antialiasing;
   if (row.regions.measured) out["regions"] = regions_json(row.regions);
   if (row.method == "quality") out["quality"] = {{"name", row.quality}, {"target", row.quality_target}};
@@ -81,6 +82,7 @@ study::ChartRow row_from_json(const json& j) {
   row.character_luminance_ratio = j.at("character_luminance_ratio").get<double>();
   row.ground_bounce = j.at("ground_bounce").get<bool>();
   row.static_transfer = j.at("static_transfer").get<std::string>();
+  row.mask_sender_light = j.at("mask_sender_light").get<bool>();
   row.is_default = j.at("default").get<bool>();
   if (j.contains("antialiasing")) row.antialiasing = j.at("antialiasing").get<std::string>();
   if (j.contains("regions")) row.regions = regions_from_json(j.at("regions"));

@@ -56,6 +56,10 @@ std::vector<MethodSetting> method_grid(bool quick) {
     grid.push_back({settings::ShadingMethod::image_space, defaults.sh_order, defaults.receiver_scale, defaults.upsampling,
                     defaults.indirect_operator, settings::IndirectMethod::proxy, 1, true,
                     settings::VsglGrouping::vertex_ranges, settings::Antialiasing::off, level});
+  // The paper's sender light: the proxies reflect the whole environment (render.mask_sender_light off).
+  MethodSetting paper_senders;
+  paper_senders.mask_sender_light = false;
+  grid.push_back(paper_senders);
   // render.quality at each named level: the chooser against the sweep (study/quality_rows.h).
   for (const auto& [name, target] : settings::kQualityLevels) {
     if (target == settings::kQualityManual) continue;
@@ -85,6 +89,7 @@ study::ChartRow describe_setting(const MethodSetting& setting, const std::string
   study::ChartRow row;
   row.scene = scene;
   row.ground_bounce = setting.ground_bounce;
+  row.mask_sender_light = setting.mask_sender_light;
   if (setting.antialiasing != settings::Antialiasing::off) row.antialiasing = std::string(settings::name_of(setting.antialiasing));
   row.static_transfer = std::string(settings::name_of(setting.static_transfer));
   if (setting.quality != settings::kQualityManual) {
@@ -112,7 +117,8 @@ study::ChartRow describe_setting(const MethodSetting& setting, const std::string
       row.is_default = setting.sh_order == defaults.sh_order && setting.receiver_scale == defaults.receiver_scale &&
                        setting.upsampling == defaults.upsampling && setting.indirect == defaults.indirect_operator &&
                        setting.indirect_method == defaults.indirect_method && setting.ground_bounce == defaults.ground_bounce &&
-                       setting.antialiasing == defaults.antialiasing && setting.static_transfer == defaults.static_transfer;
+                       setting.antialiasing == defaults.antialiasing && setting.static_transfer == defaults.static_transfer &&
+                       setting.mask_sender_light == defaults.mask_sender_light;
       break;
     case settings::ShadingMethod::vertex:
       row.method = "vertex";
@@ -171,6 +177,7 @@ Status run_raster_methods(gpu::Context& context, const study::ChartScene& chart,
     render.antialiasing = setting.antialiasing;
     render.static_transfer = setting.static_transfer;
     render.quality = setting.quality;
+    render.mask_sender_light = setting.mask_sender_light;
     grid_settings.push_back(render);
   }
   auto renderer = gpu::SceneRenderer::create(context, std::shared_ptr<const world::World>(std::move(*world)),

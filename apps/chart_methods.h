@@ -31,6 +31,7 @@ struct MethodSetting {
   // render.quality: a target makes the row method "quality", each chart frame rendered with the
   // settings chosen for its shot (the fields above are then only what is requested).
   float quality = settings::kQualityManual;
+  bool mask_sender_light = true;  // render.mask_sender_light (false: the paper's sender light)
 };
 
 // The grid: the proxy method at SH orders 3–6 × receivers 1/1, 1/2, 1/4, 1/8 × bilateral
@@ -41,10 +42,11 @@ struct MethodSetting {
 // ground bounce; the default setting supersampled (render.antialiasing ssaa2 and ssaa4: what the
 // edge region's error and the frame time do with anti-aliasing); the default proxy setting with
 // render.static_transfer ratio and l1 (on scenes without static meshes they render as l0); and
-// render.quality at its three named levels (draft, balanced, high), requested on the default setting.
+// render.quality at its three named levels (draft, balanced, high), requested on the default setting;
+// and the default setting with the paper's sender light (render.mask_sender_light off).
 // `quick`: order 4, 1/4, bilateral with the three operators, the seven vsgl rows, none, no ground
-// bounce, ssaa2 and ssaa4, the two static-transfer rows, the three quality rows, and each
-// baseline once.
+// bounce, ssaa2 and ssaa4, the two static-transfer rows, the three quality rows, the paper's sender
+// light, and each baseline once.
 std::vector<MethodSetting> method_grid(bool quick);
 
 // The chart row's identity of a setting (times and errors still zero).

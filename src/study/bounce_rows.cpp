@@ -21,6 +21,9 @@ std::string cell(double value, const char* format) {
   return text;
 }
 
+// The bounce method's name: the indirect column, and "paper-senders" for the paper's sender light.
+std::string bounce_label(const ChartRow& row) { return row.mask_sender_light ? row.indirect : row.indirect + " paper-senders"; }
+
 }  // namespace
 
 std::vector<BounceRow> mean_bounce_over_scenes(const std::vector<BounceRow>& rows) {
@@ -46,7 +49,7 @@ std::string to_bounce_csv(const std::vector<BounceRow>& rows) {
   char line[96];
   for (const BounceRow& r : rows) {
     std::snprintf(line, sizeof line, "%.4f,%.6g,%.6g", r.row.milliseconds, r.row.relative_mse, r.row.character_relative_mse);
-    text << r.row.scene << ',' << r.row.indirect << ',' << line;
+    text << r.row.scene << ',' << bounce_label(r.row) << ',' << line;
     for (const BounceError* e :
          {&r.bounce.significant, &r.bounce.character, &r.bounce.contact, &r.bounce.ground, &r.bounce.other}) {
       std::snprintf(line, sizeof line, ",%.6g,%.6g,%zu", e->relative_mse, e->luminance_ratio, e->pixels);
@@ -76,7 +79,7 @@ std::string to_bounce_markdown(const std::vector<BounceRow>& rows) {
     text << "| indirect | ms/frame | bounce relMSE | bounce brightness | character | contact | ground | other | image relMSE | character image relMSE |\n"
          << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const BounceRow* r : selected)
-      text << "| " << r->row.indirect << " | " << cell(r->row.milliseconds, "%.2f") << " | "
+      text << "| " << bounce_label(r->row) << " | " << cell(r->row.milliseconds, "%.2f") << " | "
            << cell(r->bounce.significant.relative_mse, "%.3f") << " | " << cell(r->bounce.significant.luminance_ratio, "%.2f")
            << " | " << cell(r->bounce.character.relative_mse, "%.3f") << " | " << cell(r->bounce.contact.relative_mse, "%.3f")
            << " | " << cell(r->bounce.ground.relative_mse, "%.3f") << " | " << cell(r->bounce.other.relative_mse, "%.3f")
@@ -92,7 +95,7 @@ std::string best_bounce_method(const std::vector<BounceRow>& rows, const std::st
     if (row.row.scene == scene && row.bounce.significant.relative_mse >= 0.0 &&
         (!best || row.bounce.significant.relative_mse < best->bounce.significant.relative_mse))
       best = &row;
-  return best ? best->row.indirect : std::string();
+  return best ? bounce_label(best->row) : std::string();
 }
 
 }  // namespace proxygi::study

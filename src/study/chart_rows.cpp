@@ -79,6 +79,7 @@ std::string row_label(const ChartRow& row) {
   if (!row.ground_bounce) text << " no-ground-bounce";
   if (!row.antialiasing.empty()) text << ' ' << row.antialiasing;
   if (row.static_transfer != "l0") text << " static-" << row.static_transfer;
+  if (!row.mask_sender_light) text << " paper-senders";
   return text.str();
 }
 
@@ -337,6 +338,7 @@ std::string to_json(const std::vector<ChartRow>& rows) {
                    {"ground_bounce", row.ground_bounce},
                    {"antialiasing", row.antialiasing.empty() ? std::string("off") : row.antialiasing},
                    {"static_transfer", row.static_transfer},
+                   {"mask_sender_light", row.mask_sender_light},
                    {"pareto", row.pareto},
                    {"default", row.is_default}});
     if (row.regions.measured) out.back()["regions"] = regions;

@@ -66,6 +66,7 @@ struct ChartRow {
   bool ground_bounce = true;  // proxy/ao/vertex: render.ground_bounce (label "no-ground-bounce" when off)
   std::string antialiasing;  // render.antialiasing when not off ("ssaa2", "ssaa4": appended to the label); else empty
   std::string static_transfer = "l0";  // proxy: render.static_transfer (label "static-ratio", "static-l1"; l0: none)
+  bool mask_sender_light = true;  // proxy: render.mask_sender_light (label "paper-senders" when off)
   // Method "quality": the render.quality level as named ("draft", "balanced", "high") and its
   // target relative MSE; the row's ms and errors are means over its frames, each frame rendered
   // with the settings chosen for that frame's shot (study/quality_rows.h scores the choices).
@@ -77,7 +78,7 @@ struct ChartRow {
 };
 
 // "proxy n4 k4 bilateral averaged", "proxy n4 k4 bilateral averaged no-ground-bounce", "proxy n4 k4 bilateral
-// averaged ssaa2", "path+guided 64 spp", "quality balanced", ...
+// averaged ssaa2", "proxy n4 k4 bilateral averaged paper-senders", "path+guided 64 spp", "quality balanced", ...
 std::string row_label(const ChartRow& row);
 
 // Marks, within each scene separately, the rows no other row beats in both milliseconds and

@@ -13,7 +13,7 @@ namespace {
 // The chooser's space (quality/choose.h): order × k × upsampler with everything else as default.
 bool in_chooser_space(const ChartRow& row) {
   return row.method == "proxy" && row.indirect == "averaged" && row.ground_bounce && row.antialiasing.empty() &&
-         row.static_transfer == "l0";
+         row.static_transfer == "l0" && row.mask_sender_light;
 }
 
 bool same_setting(const ChartRow& row, const ChartFrame& chosen) {
