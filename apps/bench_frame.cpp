@@ -39,6 +39,8 @@ struct BenchOptions {
   std::string vsgl_grouping = "vertex_ranges"; // settings::kVsglGroupingNames
   std::string proxy_lod = "off";               // settings::kProxyLodNames (render.proxy_lod of every row)
   std::string antialiasing = "off";            // settings::kAntialiasingNames
+  std::string readback = "hdr";                // hdr: LDR + HDR read back (record --exr); ldr: LDR only (record, viewer)
+  bool hdr() const { return readback == "hdr"; }
   std::vector<std::string> only;               // empty: every row; else "default", "crowd", "baselines", "prt"
   bool runs(const std::string& part) const { return only.empty() || asked(part); }
   bool asked(const std::string& part) const { return std::find(only.begin(), only.end(), part) != only.end(); }
@@ -116,12 +118,12 @@ Result<ConfigResult> run_config(gpu::Context& context, const std::string& name,
                                                                               : std::size_t(config.receiver_count());
   result.characters = scene.characters.size();
   const int first = scene.output.first_frame;
-  auto frame_ms = run::time_pipelined_frames(**renderer, first, options.frames);
+  auto frame_ms = run::time_pipelined_frames(**renderer, first, options.frames, options.hdr());
   if (!frame_ms) return frame_ms.error();
   result.frame_ms = *frame_ms;
 
   for (int i = 0; i < options.frames; ++i) {
-    auto timings = (*renderer)->time_passes(first + 2 + i);
+    auto timings = (*renderer)->time_passes(first + 2 + i, gpu::PassClock::fenced_cpu, options.hdr());
     if (!timings) return timings.error();
     for (std::size_t p = 0; p < timings->milliseconds.size(); ++p)
       result.passes.milliseconds[p] += timings->milliseconds[p] / options.frames;
@@ -168,7 +170,7 @@ Result<PairedSpeedup> paired_quarter_speedup(gpu::Context& context, const std::s
   for (int round = 0; round < rounds; ++round) {
     double ms[2];
     for (int i = 0; i < 2; ++i) {
-      auto timed = run::time_pipelined_frames(*renderers[i], first, options.frames);
+      auto timed = run::time_pipelined_frames(*renderers[i], first, options.frames, options.hdr());
       if (!timed) return timed.error();
       ms[i] = *timed, sums[i] += *timed;
     }
@@ -260,6 +262,7 @@ int run_bench_frame(const BenchOptions& options) {
     out["vsgl_grouping"] = options.vsgl_grouping;
     out["antialiasing"] = options.antialiasing;
     out["proxy_lod"] = options.proxy_lod;
+    out["readback"] = options.readback;
     out["peak_resident_mib"] = peak_mib;
     if (has_default) {
       out["speedup_quarter_over_full"] = paired.ratio;
@@ -296,7 +299,7 @@ int run_bench_frame(const BenchOptions& options) {
   if (options.indirect_method == "vsgl")
     std::printf(", %d lights per character by %s", options.vsgl_lights, options.vsgl_grouping.c_str());
   if (options.antialiasing != "off") std::printf(", antialiasing %s", options.antialiasing.c_str());
-  std::printf(", proxy_lod %s\n", options.proxy_lod.c_str());
+  std::printf(", proxy_lod %s, readback %s\n", options.proxy_lod.c_str(), options.readback.c_str());
   std::printf("%-8s %-6s %-7s %3s %9s %5s %7s %9s %6s |", "scene", "method", "splat", "k", "receivers", "chars",
               "proxies", "frame ms", "fps");
   for (std::size_t p = 0; p < std::size_t(gpu::FramePass::count); ++p)
@@ -354,6 +357,10 @@ void add_bench_frame_command(CLI::App& bench, CommandRunner& runner) {
       ->check(CLI::IsMember({"off", "ssaa2", "ssaa4"}));
   command->add_option("--proxy-lod", options->proxy_lod, "Proxy levels of detail of every setting (render.proxy_lod)")
       ->check(CLI::IsMember({"off", "auto"}));
+  command->add_option("--readback", options->readback,
+                      "Frame output timed: hdr (LDR and HDR read back, as record --exr; default) or ldr (the LDR frame "
+                      "alone, as record without --exr and the viewer)")
+      ->check(CLI::IsMember({"hdr", "ldr"}));
   command->add_option("--only", options->only,
                       "Rows to run (default: all but prt): default, baselines, crowd, prt (the wall corner at each "
                       "render.static_transfer)")

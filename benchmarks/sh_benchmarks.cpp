@@ -9,6 +9,7 @@
 #include "sh/environment.h"
 #include "sh/exponential.h"
 #include "sh/ground_bounce.h"
+#include "sh/sender_light.h"
 #include "sh/occlusion_tables.h"
 #include "sh/product.h"
 #include "sh/rotation.h"
@@ -141,6 +142,15 @@ void sh_ground_lit_cubes(benchmark::State& state) {
     }
 }
 BENCHMARK(sh_ground_lit_cubes)->Name("sh/ground_lit_cubes/4")->Unit(benchmark::kMillisecond);
+
+// The proxies' sender light (sh/sender_light.h): three order-3 cubes of the order-4 sky, 16² per
+// face, what render.mask_sender_light adds to every table build.
+void sh_sender_light_cubes(benchmark::State& state) {
+  const RgbSh sky = project_sky(4, AnalyticSky{});
+  for (auto _ : state)
+    for (const auto& channel : sky.channels) benchmark::DoNotOptimize(make_sender_light_cube(4, channel, 16));
+}
+BENCHMARK(sh_sender_light_cubes)->Name("sh/sender_light_cubes/4")->Unit(benchmark::kMillisecond);
 
 #define PROXYGI_SH_BENCHMARKS(ORDER)                                                                                 \
   BENCHMARK(sh_basis<ORDER>)->Name("sh/basis/" #ORDER);                                                              \

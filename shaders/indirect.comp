@@ -35,23 +35,20 @@ layout(std430, set = 0, binding = kIndirectBindShaded) writeonly buffer Shaded {
 #endif
 #if INDIRECT_OPERATOR != 3
 #include "cube_taps.glsl"
-layout(std430, set = 0, binding = kIndirectBindSenderLight) readonly buffer SenderLight { float sender_light_cube[]; };
+// Per cube texel, coefficient i's (r, g, b, 0) at texel * 9 + i (gpu/frame_resources.cpp).
+layout(set = 0, binding = kIndirectBindSenderLight) uniform samplerBuffer sender_light_texels;
 
 // L̃_N of the three channels, bilinear in the cube face N hits (CPU twin render::sender_light).
+// The taps address one channel's cube of 9 values per texel: that index is the texel's first texel.
 void sender_light(vec3 n, out vec3 light[9]) {
   const int count = int(kIndirectOrder * kIndirectOrder);
-  int size = int(frame.lighting_cube_face_size);
-  CubeTaps taps = cube_map_taps(size, count, 0, n);
-  int channel_stride = 6 * size * size * count;
+  CubeTaps taps = cube_map_taps(int(frame.lighting_cube_face_size), count, 0, n);
   for (int i = 0; i < count; ++i) {
-    vec3 value;
-    for (int c = 0; c < 3; ++c) {
-      int offset = c * channel_stride + i;
-      float top = sender_light_cube[taps.t00 + offset] + taps.fx * (sender_light_cube[taps.t10 + offset] - sender_light_cube[taps.t00 + offset]);
-      float bottom = sender_light_cube[taps.t01 + offset] + taps.fx * (sender_light_cube[taps.t11 + offset] - sender_light_cube[taps.t01 + offset]);
-      value[c] = top + taps.fy * (bottom - top);
-    }
-    light[i] = value;
+    vec3 t00 = texelFetch(sender_light_texels, taps.t00 + i).rgb, t10 = texelFetch(sender_light_texels, taps.t10 + i).rgb;
+    vec3 t01 = texelFetch(sender_light_texels, taps.t01 + i).rgb, t11 = texelFetch(sender_light_texels, taps.t11 + i).rgb;
+    vec3 top = t00 + taps.fx * (t10 - t00);
+    vec3 bottom = t01 + taps.fx * (t11 - t01);
+    light[i] = top + taps.fy * (bottom - top);
   }
 }
 #endif

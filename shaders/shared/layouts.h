@@ -321,7 +321,7 @@ PROXYGI_CONST(uint, kIndirectBindIndirect, 5u);
 PROXYGI_CONST(uint, kIndirectBindShaded, 6u);
 PROXYGI_CONST(uint, kIndirectBindExactTable, 7u);
 PROXYGI_CONST(uint, kIndirectBindVsglLights, 8u);  // read by the vsgl variant only
-PROXYGI_CONST(uint, kIndirectBindSenderLight, 9u);  // L̃_N cubes (render::FrameTables::sender_light_cube); not the vsgl variant
+PROXYGI_CONST(uint, kIndirectBindSenderLight, 9u);  // L̃_N cube texels (render::FrameTables::sender_light_cube); not the vsgl variant
 // vsgl_lights.comp
 PROXYGI_CONST(uint, kVsglBindFrame, 0u);
 PROXYGI_CONST(uint, kVsglBindPositions, 1u);

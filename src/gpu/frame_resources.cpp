@@ -181,9 +181,14 @@ Status SoftGiFrame::upload_tables(const render::FrameTables& tables) {
     optimal_linear.emplace_back(tables.optimal_linear.a[std::size_t(row)], tables.optimal_linear.b[std::size_t(row)]);
   std::vector<float> cubes;
   for (const auto& cube : tables.lighting_cube) cubes.insert(cubes.end(), cube.values.begin(), cube.values.end());
-  std::vector<float> sender_cubes;
-  for (const auto& cube : tables.sender_light_cube)
-    sender_cubes.insert(sender_cubes.end(), cube.values.begin(), cube.values.end());
+  // The sender light as texels (indirect.comp reads texels in SIMD; a storage-buffer read is a
+  // loop over the lanes on lavapipe): per cube texel, coefficient i's (r, g, b, 0) at texel * 9 + i.
+  std::vector<glm::vec4> sender_texels;
+  const std::size_t sender_values = tables.sender_light_cube[0].values.size();
+  sender_texels.reserve(sender_values);
+  for (std::size_t v = 0; v < sender_values; ++v)
+    sender_texels.emplace_back(tables.sender_light_cube[0].values[v], tables.sender_light_cube[1].values[v],
+                               tables.sender_light_cube[2].values[v], 0.0f);
   Tables uploaded;
   struct TableUpload {
     Buffer* buffer;
@@ -195,13 +200,17 @@ Status SoftGiFrame::upload_tables(const render::FrameTables& tables) {
       {&uploaded.exact_indirect, bytes_of(std::span<const float>(tables.exact_indirect.values))},
       {&uploaded.optimal_linear, bytes_of(std::span<const glm::vec2>(optimal_linear))},
       {&uploaded.lighting_cube, bytes_of(std::span<const float>(cubes))},
-      {&uploaded.sender_light, bytes_of(std::span<const float>(sender_cubes))},
   };
   for (const auto& upload : uploads) {
     auto made = create_buffer_with_data(context_, upload.bytes, kStorage);
     if (!made) return made.error();
     *upload.buffer = std::move(*made);
   }
+  auto sender = create_buffer_with_data(context_, bytes_of(std::span<const glm::vec4>(sender_texels)),
+                                        VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  if (!sender) return sender.error();
+  if (Status s = sender->add_texel_view(context_, VK_FORMAT_R32G32B32A32_SFLOAT); !s) return s;
+  uploaded.sender_light = std::move(*sender);
   uploaded.log_table_rows = float(tables.log_occlusion.rows);
   uploaded.visibility_rows = float(tables.proxy_visibility.rows);
   uploaded.optimal_linear_rows = float(tables.optimal_linear.rows());

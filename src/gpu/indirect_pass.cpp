@@ -16,7 +16,7 @@ Result<IndirectPass> IndirectPass::create(const Context& context, const settings
                                      {kIndirectBindShaded, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                                      {kIndirectBindExactTable, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                                      {kIndirectBindVsglLights, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                                     {kIndirectBindSenderLight, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+                                     {kIndirectBindSenderLight, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER}};
   const std::string variant = render.indirect_method == settings::IndirectMethod::vsgl
                                   ? std::string("vsgl")
                                   : std::string(settings::name_of(render.indirect_operator));
@@ -46,7 +46,7 @@ void IndirectPass::record(const Context& context, VkCommandBuffer commands, cons
       .storage_buffer(kIndirectBindShaded, *out.shaded)
       .storage_buffer(kIndirectBindExactTable, *in.exact_table)
       .storage_buffer(kIndirectBindVsglLights, *in.vsgl_lights)
-      .storage_buffer(kIndirectBindSenderLight, *in.sender_light)
+      .uniform_texel_buffer(kIndirectBindSenderLight, in.sender_light->texel_view())
       .push(context, commands, pipeline_);
   dispatch_grid(commands, in.receiver_width, in.receiver_height);
 }

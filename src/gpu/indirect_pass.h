@@ -21,7 +21,7 @@ class IndirectPass {
     const Buffer* direct = nullptr;            // exponentiate's output
     const Buffer* exact_table = nullptr;       // M(s) rows (read by the exact variant only)
     const Buffer* vsgl_lights = nullptr;       // VsglLightsPass's lights (read by the vsgl variant only)
-    const Buffer* sender_light = nullptr;      // L̃_N cubes, r g b (FrameTables::sender_light_cube; not vsgl)
+    const Buffer* sender_light = nullptr;      // L̃_N cube texels, (r, g, b, 0) per coefficient (FrameTables::sender_light_cube; not vsgl)
     std::uint32_t receiver_width = 0, receiver_height = 0;
   };
   struct Outputs {

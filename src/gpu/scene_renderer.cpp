@@ -369,7 +369,7 @@ Result<FinishedFrame> SceneRenderer::finish_frame(int frame) {
 
 Result<FinishedFrame> SceneRenderer::render(int frame) { return render(scene_frame(scene(), frame)); }
 
-Result<PassTimings> SceneRenderer::time_passes(int frame, PassClock clock) {
+Result<PassTimings> SceneRenderer::time_passes(int frame, PassClock clock, bool hdr) {
   for (const SlotState& slot : slots_)
     if (slot.busy) return make_error("time_passes: finish every begun frame first");
   const auto start = std::chrono::steady_clock::now();
@@ -388,8 +388,8 @@ Result<PassTimings> SceneRenderer::time_passes(int frame, PassClock clock) {
     return std::chrono::duration<double, std::milli>(end_time - begin_time).count();
   };
   const auto passes = frame_pass_order(frame_->settings().method);
-  // The outputs of run::time_pipelined_frames' frames (HDR read back, no AOV): the same composite.
-  FrameOutput output = FrameOutput::readback(true);
+  // The outputs of run::time_pipelined_frames' frames (no AOV, the HDR when asked): the same composite.
+  FrameOutput output = FrameOutput::readback(hdr);
   output.float_targets = false;
   if (clock == PassClock::timestamps_if_valid) {
     // One submit: a timestamp before skinning and after it and each pass.

@@ -175,8 +175,8 @@ class SceneRenderer {
   Result<FinishedFrame> render(int frame);
   // Prepares frame `frame` and times each of its passes (PassClock). Needs every begun frame
   // finished. The frame's pixels are not copied out; its composite writes what
-  // run::time_pipelined_frames' frames keep (the HDR, no irradiance AOV: FrameOutput::float_targets).
-  Result<PassTimings> time_passes(int frame, PassClock clock = PassClock::fenced_cpu);
+  // run::time_pipelined_frames' frames keep (no irradiance AOV; the HDR when `hdr`).
+  Result<PassTimings> time_passes(int frame, PassClock clock = PassClock::fenced_cpu, bool hdr = true);
 
   // The skinned world-space positions of the last finished frame, per instance and primitive in
   // the order of the instance's mesh nodes (what the G-buffer drew; for tests against the CPU

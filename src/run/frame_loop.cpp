@@ -42,13 +42,13 @@ Status render_frames(gpu::SceneRenderer& renderer, std::span<const int> frames, 
   return failure;
 }
 
-Result<double> time_pipelined_frames(gpu::SceneRenderer& renderer, int first, int frames) {
+Result<double> time_pipelined_frames(gpu::SceneRenderer& renderer, int first, int frames, bool hdr) {
   for (int warm = 0; warm < kWarmupFrames; ++warm)
     if (auto done = renderer.render(first + warm); !done) return done.error();
   std::vector<int> timed(static_cast<std::size_t>(frames));
   for (int i = 0; i < frames; ++i) timed[std::size_t(i)] = first + kWarmupFrames + i;
   FrameLoopOptions options;
-  options.output = gpu::FrameOutput::readback(true);  // as record with EXR: the chart's timings stay comparable
+  options.output = gpu::FrameOutput::readback(hdr);  // hdr: as record with EXR (the chart's timings)
   options.output.float_targets = false;               // as record: no AOV
   options.in_flight = 2;
   const auto start = std::chrono::steady_clock::now();

@@ -30,8 +30,9 @@ Status render_frames(gpu::SceneRenderer& renderer, std::span<const int> frames, 
 inline constexpr int kWarmupFrames = 2;
 
 // Renders frames first .. first + kWarmupFrames − 1 to warm up, then `frames` frames from
-// first + kWarmupFrames pipelined (two in flight, as `record` runs, LDR and HDR read back);
-// returns milliseconds per frame.
-Result<double> time_pipelined_frames(gpu::SceneRenderer& renderer, int first, int frames);
+// first + kWarmupFrames pipelined (two in flight, as `record` runs; LDR and HDR read back as
+// `record --exr` does, or with `hdr` false the LDR frame alone, as `record` without EXR and the
+// viewer); returns milliseconds per frame.
+Result<double> time_pipelined_frames(gpu::SceneRenderer& renderer, int first, int frames, bool hdr = true);
 
 }  // namespace proxygi::run
