@@ -39,7 +39,7 @@ layout(std430, set = 0, binding = kIndirectBindShaded) writeonly buffer Shaded {
 layout(set = 0, binding = kIndirectBindSenderLight) uniform samplerBuffer sender_light_texels;
 
 // L̃_N of the three channels, bilinear in the cube face N hits (CPU twin render::sender_light).
-// The taps address one channel's cube of 9 values per texel: that index is the texel's first texel.
+// cube_map_taps with 9 values per texel gives texel × 9: the first of that cube texel's 9 texels here.
 void sender_light(vec3 n, out vec3 light[9]) {
   const int count = int(kIndirectOrder * kIndirectOrder);
   CubeTaps taps = cube_map_taps(int(frame.lighting_cube_face_size), count, 0, n);

@@ -101,9 +101,9 @@ struct FrameConstants {
   uint tile_counts_valid;        // 1: the shadow pass wrote the TileCounts buffer (compute gather, AO)
   float occlusion_scale;         // direct[].w × this = visible fraction of the sphere (1/√4π SHEXP, 1 AO)
   uint padding_debug2;
-  vec4 irradiance_sh[3u * kIndirectOrder * kIndirectOrder];  // L̃ = L * clamped cosine, order 3, r then g then b; x used
-  // VSGL (render.indirect_method vsgl): the L̃ that lights the vertex VPLs (vsgl_lights.comp):
-  // irradiance_sh without the sun's share when the sun variant is on (sh/vsgl_sun.h), else equal.
+  // VSGL (render.indirect_method vsgl): the L̃ = L * clamped cosine (order 3, r then g then b; x
+  // used) that lights the vertex VPLs (vsgl_lights.comp), without the sun's share when the sun
+  // variant is on (sh/vsgl_sun.h). The proxies' sender light is a table (kIndirectBindSenderLight).
   vec4 vsgl_sender_sh[3u * kIndirectOrder * kIndirectOrder];
   // The sun variant (render.vsgl_sun; rsm.vert/.frag, rsm_sums.comp), when rsm_toward_sun.w is 1:
   mat4 rsm_view_projection;          // world → the sun map's Vulkan clip space (sh::RsmView)
@@ -196,7 +196,7 @@ struct StaticTriangle {
 // ---- VSGL bounce light (render.indirect_method vsgl; sh/vsgl.h is the CPU twin) ----
 // vsgl_lights.comp stage 0: each character draw's triangles (or one of render.vsgl_lights index
 // ranges of them, each its own light) are diffuse VPLs (centroid, summed vertex normals, area,
-// flux = base color × max(E(N), 0) × area × the vertices' mean sender exposure, E from irradiance_sh), summed per workgroup
+// flux = base color × max(E(N), 0) × area × the vertices' mean sender exposure, E from vsgl_sender_sh), summed per workgroup
 // (kVsglGroupSize × kVsglTrianglesPerInvocation triangles) into one partial (positions relative
 // to the group's first centroid); stage 1: one invocation per light sums its partials in order (shifted to the
 // origin of its first) and fits the VSGL. indirect.comp:vsgl evaluates the lights per receiver.
@@ -406,9 +406,9 @@ PROXYGI_CONST(uint, kResolveBindFirstTarget, 2u);
 static_assert(sizeof(TestPatternPush) == 16);
 static_assert(sizeof(ProxySphere) == 32);
 static_assert(sizeof(StaticTriangle) == 32);
-static_assert(sizeof(FrameConstants) == 128 + 16 * 8 + 16 * 27 + 16 * 27 + 128 + 32);
-static_assert(offsetof(FrameConstants, rsm_view_projection) == 256 + 2 * 16 * 27);
-static_assert(offsetof(FrameConstants, display_width) == 160 && offsetof(FrameConstants, irradiance_sh) == 256);
+static_assert(sizeof(FrameConstants) == 128 + 16 * 8 + 16 * 27 + 128 + 32);
+static_assert(offsetof(FrameConstants, rsm_view_projection) == 256 + 16 * 27);
+static_assert(offsetof(FrameConstants, display_width) == 160 && offsetof(FrameConstants, vsgl_sender_sh) == 256);
 static_assert(sizeof(GbufferPush) == 64);
 static_assert(sizeof(Receiver) == 32 && sizeof(Receiver) == kReceiverTexels * sizeof(glm::vec4));
 static_assert(sizeof(CompositePush) == 16);

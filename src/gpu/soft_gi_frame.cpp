@@ -140,10 +140,6 @@ Status SoftGiFrame::write_slot(std::uint32_t slot, const FrameView& view, std::s
   constants.tonemap = tonemap_code(render.tonemap);
   constants.bilateral_depth_epsilon = render.bilateral_depth_epsilon;
   constants.indirect_enabled = render.indirect_method != settings::IndirectMethod::none ? 1u : 0u;
-  for (int channel = 0; channel < 3; ++channel)
-    for (int i = 0; i < 9; ++i)
-      constants.irradiance_sh[channel * 9 + i] =
-          glm::vec4(tables_.irradiance_order3[std::size_t(channel)][std::size_t(i)], 0, 0, 0);
   // The sun variant: the map fitted to the proxies' box (sh::rsm_margin); without it the vertex
   // VPLs keep the whole L̃.
   slots_[slot].rsm = passes_.rsm && tables_.vsgl_sun && !spheres.empty();

@@ -35,7 +35,7 @@ std::uint32_t vsgl_light_count(std::span<const DrawItem> draws, std::uint32_t li
 class VsglLightsPass {
  public:
   struct Inputs {
-    const Buffer* constants = nullptr;  // FrameConstants (irradiance_sh)
+    const Buffer* constants = nullptr;  // FrameConstants (vsgl_sender_sh)
     std::span<const DrawItem> draws;    // only those with vsgl_light ≥ 0 are senders
     // render.vsgl_lights: triangles [k T/K, (k+1) T/K) of each draw of sender s are light s·K + k
     // (integer division, T the draw's triangle count), or with bone groups (the draw's
