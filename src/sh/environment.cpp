@@ -1,6 +1,8 @@
 #include "sh/environment.h"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "base/check.h"
 #include "sh/basis.h"
@@ -90,29 +92,34 @@ RgbSh project_sky(int order, const AnalyticSky& sky) {
   return result;
 }
 
-std::vector<double> lighting_times_clamped_cosine(int order, std::span<const double> lighting, const glm::dvec3& normal) {
-  const std::size_t count = std::size_t(order * order);
+std::vector<double> project_over_hemisphere(int order, std::span<const double> lighting, const glm::dvec3& normal, int out_order,
+                                            bool cosine_weighted, int z_count, int phi_count) {
+  const std::size_t count = std::size_t(order * order), out_count = std::size_t(out_order * out_order);
   PROXYGI_CHECK(lighting.size() >= count, "lighting span too small");
+  static thread_local SphereQuadrature hemisphere;
+  static thread_local std::pair<int, int> hemisphere_nodes{-1, -1};
+  if (hemisphere_nodes != std::pair{z_count, phi_count}) {
+    hemisphere = make_cap_quadrature(0.0, z_count, phi_count);
+    hemisphere_nodes = {z_count, phi_count};
+  }
+  const glm::dmat3 to_normal = rotation_between({0.0, 0.0, 1.0}, normal);
+  const int basis_order = std::max(order, out_order);
+  std::vector<double> result(out_count, 0.0), basis(std::size_t(basis_order * basis_order));
+  for (std::size_t q = 0; q < hemisphere.size(); ++q) {
+    evaluate_basis(basis_order, to_normal * hemisphere.directions[q], basis);
+    double radiance = 0.0;
+    for (std::size_t i = 0; i < count; ++i) radiance += lighting[i] * basis[i];
+    const double weight = hemisphere.weights[q] * (cosine_weighted ? hemisphere.directions[q].z : 1.0) * radiance;
+    for (std::size_t i = 0; i < out_count; ++i) result[i] += weight * basis[i];
+  }
+  return result;
+}
+
+std::vector<double> lighting_times_clamped_cosine(int order, std::span<const double> lighting, const glm::dvec3& normal) {
   // Over the hemisphere about N the integrand L(s) y_i(s) (N.s) is a polynomial of degree
   // 2(n-1)+1 in s whose odd powers of sin(theta') cancel over phi': Gauss nodes in cos(theta')
   // on [0, 1] and 2n+2 phi samples are exact.
-  static thread_local SphereQuadrature hemisphere;
-  static thread_local int hemisphere_order = -1;
-  if (hemisphere_order != order) {
-    hemisphere = make_cap_quadrature(0.0, order + 1, 2 * order + 2);
-    hemisphere_order = order;
-  }
-  const glm::dmat3 to_normal = rotation_between({0.0, 0.0, 1.0}, normal);
-  std::vector<double> result(count, 0.0), basis(count);
-  for (std::size_t q = 0; q < hemisphere.size(); ++q) {
-    const glm::dvec3 dir = to_normal * hemisphere.directions[q];
-    evaluate_basis(order, dir, basis);
-    double radiance = 0.0;
-    for (std::size_t i = 0; i < count; ++i) radiance += lighting[i] * basis[i];
-    const double weight = hemisphere.weights[q] * hemisphere.directions[q].z * radiance;
-    for (std::size_t i = 0; i < count; ++i) result[i] += weight * basis[i];
-  }
-  return result;
+  return project_over_hemisphere(order, lighting, normal, order, true, order + 1, 2 * order + 2);
 }
 
 glm::dvec3 cube_map_direction(int face, int x, int y, int face_size) {

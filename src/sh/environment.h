@@ -54,6 +54,13 @@ RgbSh project_sky(int order, const AnalyticSky& sky);
 // The sun disc's share of project_sky alone: sun_radiance × the SH of the cap's indicator.
 RgbSh project_sun_disc(int order, const AnalyticSky& sky);
 
+// The order-`out_order` projection of L(s) w(s) over the hemisphere s . N > 0 (zero below it),
+// w = N . s when `cosine_weighted`, else 1, for the order-n lighting L (one channel; N unit): the
+// cap rule of sh/quadrature.h with z_count x phi_count nodes turned onto N, exact when they cover
+// the integrand's degree. Shared by LH(N) below and the proxies' sender light (sh/sender_light.h).
+std::vector<double> project_over_hemisphere(int order, std::span<const double> lighting, const glm::dvec3& normal, int out_order,
+                                            bool cosine_weighted, int z_count, int phi_count);
+
 // LH(N) = SH projection (order n) of L(s) max(N . s, 0) for the lighting L given by its order-n
 // SH vector: the shadowed irradiance at a receiver is E = O_p . LH(N) (not divided by pi).
 // Computed by exact hemisphere quadrature about N (no truncation of the clamped cosine).

@@ -5,8 +5,6 @@
 #include "base/check.h"
 #include "sh/basis.h"
 #include "sh/convolution.h"
-#include "sh/quadrature.h"
-#include "sh/rotation.h"
 
 namespace proxygi::sh {
 namespace {
@@ -17,32 +15,13 @@ constexpr int kSenderOrder = 3;  // the indirect pass's order (gpu_layout::kIndi
 
 std::vector<double> project_above_plane(int order, std::span<const double> lighting, const glm::dvec3& normal,
                                         int out_order) {
-  const std::size_t count = std::size_t(coefficient_count(order));
-  const std::size_t out_count = std::size_t(coefficient_count(out_order));
   PROXYGI_CHECK(order >= kMinOrder && order <= kMaxOrder && out_order >= kMinOrder && out_order <= kMaxOrder &&
-                    lighting.size() >= count,
+                    lighting.size() >= std::size_t(coefficient_count(order)),
                 "project_above_plane: bad lighting or order");
   // Degree ≤ (order − 1) + (out_order − 1): exact with max(order, out_order) nodes in cos θ and
   // twice as many φ samples (sh/quadrature.h).
   const int nodes = std::max(order, out_order);
-  static thread_local SphereQuadrature upper;
-  static thread_local int upper_nodes = -1;
-  if (upper_nodes != nodes) {
-    upper = make_cap_quadrature(0.0, nodes, 2 * nodes);
-    upper_nodes = nodes;
-  }
-  const glm::dmat3 to_normal = rotation_between({0.0, 0.0, 1.0}, normal);
-  const std::size_t basis_count = std::max(count, out_count);
-  std::vector<double> result(out_count, 0.0), basis(basis_count);
-  const int basis_order = std::max(order, out_order);
-  for (std::size_t q = 0; q < upper.size(); ++q) {
-    evaluate_basis(basis_order, to_normal * upper.directions[q], basis);
-    double radiance = 0.0;
-    for (std::size_t i = 0; i < count; ++i) radiance += lighting[i] * basis[i];
-    const double weight = upper.weights[q] * radiance;
-    for (std::size_t i = 0; i < out_count; ++i) result[i] += weight * basis[i];
-  }
-  return result;
+  return project_over_hemisphere(order, lighting, normal, out_order, false, nodes, 2 * nodes);
 }
 
 LightingCubeMap make_sender_light_cube(int order, std::span<const double> lighting, int face_size) {
