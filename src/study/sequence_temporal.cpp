@@ -51,9 +51,8 @@ TemporalScores score_region(std::span<const ref::Plane> test, std::span<const re
     scores.reprojected += g.pixels;
     if (t + 1 < n) {
       const Reprojection forward = restricted(to_previous_next[t][1], region[t]);
-      const ref::Plane xs[3] = {test[t - 1], test[t], test[t + 1]};
-      const ref::Plane rs[3] = {reference[t - 1], reference[t], reference[t + 1]};
-      accumulate(scores.pop, pop_error(xs, rs, back, forward), pop_terms);
+      accumulate(scores.pop,
+                 pop_error(test.subspan(t - 1).first<3>(), reference.subspan(t - 1).first<3>(), back, forward), pop_terms);
     }
   }
   double sum = 0.0;

@@ -144,9 +144,9 @@ SweepResult influence_fade(const StabilityOptions& options) {
 // reference, both on the same static receivers.
 ErrorSummary pop_at(const std::vector<ref::Plane>& x, const std::vector<ref::Plane>& reference, int t,
                     const Reprojection& same) {
-  const ref::Plane xs[3] = {x[std::size_t(t - 1)], x[std::size_t(t)], x[std::size_t(t + 1)]};
-  const ref::Plane rs[3] = {reference[std::size_t(t - 1)], reference[std::size_t(t)], reference[std::size_t(t + 1)]};
-  return pop_error(std::span<const ref::Plane, 3>(xs, 3), std::span<const ref::Plane, 3>(rs, 3), same, same);
+  // Frames t − 1, t, t + 1 in place (no copies of the planes).
+  const std::span<const ref::Plane, 3> xs(x.data() + (t - 1), 3), rs(reference.data() + (t - 1), 3);
+  return pop_error(xs, rs, same, same);
 }
 
 // A "character" of 64 spheres (a 4 x 4 x 4 block) and its 8-sphere LOD (one sphere per 2 x 2 x 2
